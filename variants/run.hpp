@@ -1,0 +1,67 @@
+// The one entry point that the command line, the tests and the benchmarks use
+// to triangulate: pick algorithm x kernel x policy x order by name, run, and get
+// the finite simplices back with the counters of the run.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "predicates/point.hpp"
+
+namespace dlab {
+
+// Points of one dimension (2 or 3); only the matching vector is used.
+struct PointSet {
+  int dimension = 2;
+  std::vector<Point2> p2;
+  std::vector<Point3> p3;
+  std::size_t size() const { return dimension == 2 ? p2.size() : p3.size(); }
+};
+
+struct RunOptions {
+  std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | tanemura | george
+  std::string kernel = "adaptive";          // adaptive | integer | mp | float | epsilon
+  std::string policy = "sos";               // sos | strict
+  std::string order = "brio";               // input | random | brio | hilbert
+  std::uint64_t seed = 0;
+};
+
+// Thrown for an unknown algorithm / kernel / policy / order name, or a
+// combination that does not exist: the caller reports it as a usage error (exit 2).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Named counters, in a fixed order so that --stats output is byte-identical.
+using Counters = std::vector<std::pair<std::string, std::uint64_t>>;
+
+struct RunResult {
+  enum class Outcome {
+    ok,                 // simplices hold the triangulation
+    lower_dimensional,  // fewer than d+1 distinct points, or all collinear/coplanar: no simplex
+    failed              // the algorithm detected a failure (inexact kernels only)
+  };
+  Outcome outcome = Outcome::ok;
+  std::string message;  // why lower-dimensional, or what failed
+  int dimension = 2;
+  // (dimension+1) zero-based indices per finite simplex, each positively
+  // oriented (det[v1-v0; ...; vd-v0] > 0); duplicates refer to their first
+  // occurrence in the input.
+  std::vector<std::uint32_t> simplices;
+  PointSet points;           // the points actually triangulated (snapped by `integer`)
+  std::size_t distinct_points = 0;
+  double seconds = 0;        // triangulating only
+  Counters counters;         // algorithm counters: "walk_steps", "cavity_simplices", "flips_2_3", ...
+  Counters predicates;       // "orient2d", "orient2d_stage_A", ... calls per predicate and stage
+  Counters snapping;         // integer kernel: "points_moved", "points_merged", ...; empty otherwise
+  double max_snap_displacement = 0;
+};
+
+RunResult run(const PointSet& points, const RunOptions& options);
+
+std::vector<std::string> algorithm_names();
+std::vector<std::string> kernel_names();
+
+}  // namespace dlab
