@@ -12,14 +12,14 @@
 namespace dlab::det {
 
 template <class T, class P>
-T orient2d(const P& a, const P& b, const P& c) {
+constexpr T orient2d(const P& a, const P& b, const P& c) {
   const T acx = T(a[0]) - T(c[0]), acy = T(a[1]) - T(c[1]);
   const T bcx = T(b[0]) - T(c[0]), bcy = T(b[1]) - T(c[1]);
   return T(acx * bcy) - T(acy * bcx);
 }
 
 template <class T, class P>
-T incircle(const P& a, const P& b, const P& c, const P& d) {
+constexpr T incircle(const P& a, const P& b, const P& c, const P& d) {
   const T adx = T(a[0]) - T(d[0]), ady = T(a[1]) - T(d[1]);
   const T bdx = T(b[0]) - T(d[0]), bdy = T(b[1]) - T(d[1]);
   const T cdx = T(c[0]) - T(d[0]), cdy = T(c[1]) - T(d[1]);
@@ -33,7 +33,7 @@ T incircle(const P& a, const P& b, const P& c, const P& d) {
 }
 
 template <class T, class P>
-T orient3d(const P& a, const P& b, const P& c, const P& d) {
+constexpr T orient3d(const P& a, const P& b, const P& c, const P& d) {
   const T adx = T(a[0]) - T(d[0]), ady = T(a[1]) - T(d[1]), adz = T(a[2]) - T(d[2]);
   const T bdx = T(b[0]) - T(d[0]), bdy = T(b[1]) - T(d[1]), bdz = T(b[2]) - T(d[2]);
   const T cdx = T(c[0]) - T(d[0]), cdy = T(c[1]) - T(d[1]), cdz = T(c[2]) - T(d[2]);
@@ -42,7 +42,7 @@ T orient3d(const P& a, const P& b, const P& c, const P& d) {
 }
 
 template <class T, class P>
-T insphere(const P& a, const P& b, const P& c, const P& d, const P& e) {
+constexpr T insphere(const P& a, const P& b, const P& c, const P& d, const P& e) {
   const T aex = T(a[0]) - T(e[0]), aey = T(a[1]) - T(e[1]), aez = T(a[2]) - T(e[2]);
   const T bex = T(b[0]) - T(e[0]), bey = T(b[1]) - T(e[1]), bez = T(b[2]) - T(e[2]);
   const T cex = T(c[0]) - T(e[0]), cey = T(c[1]) - T(e[1]), cez = T(c[2]) - T(e[2]);

@@ -1,0 +1,200 @@
+// Re-starring a cavity from a new vertex: the step shared by Bowyer–Watson
+// (Bowyer 1981, Watson 1981; Baker, Handbook of Grid Generation ch. 16.2.2)
+// and George's corrected cavity (George 1997, section 2.3 step 7).
+//
+// Input: the cavity (simplex ids, in any order) and its boundary, collected
+// while the cavity was searched, as records
+//   { the new simplex's vertices: the cavity simplex's vertices with p in the
+//     slot of the boundary facet's opposite vertex; that slot; the outside
+//     facet (encoded t*(D+1)+j) across the boundary }.
+// The new simplex keeps the cavity simplex's orientation because p sits on the
+// same side of the boundary facet as the vertex it replaces (star-shapedness).
+//
+// Every other facet of a new simplex contains p and D-1 boundary vertices; such
+// a facet is shared by exactly two new simplices (the cavity boundary is a
+// closed (D-1)-manifold: a cycle in 2D, a triangulated sphere in 3D).  In 2D
+// (cavities of up to 32 triangles) each new triangle finds its successor along
+// the cycle through a 64-entry table of the boundary edges' start vertices.  Otherwise they
+// are paired through a small open-addressing table keyed by those D-1 vertex
+// ids (design.md section 7 item 3 uses a 32x32 table on local ids; a hash on
+// global ids does the same job with no local numbering), marked by a stamp so
+// it is never cleared.  A key seen a third time, or left unpaired, means the
+// cavity boundary was not a manifold: reported, never trusted (inexact
+// kernels can produce such cavities).
+//
+// New simplices reuse the cavity's slots first; extra cavity slots go back to
+// the free list.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "algorithms/mesh.hpp"
+
+namespace dlab {
+
+template <int D>
+struct BoundaryRecord {
+  std::array<std::uint32_t, D + 1> v;  // vertices of the new simplex (p included)
+  std::uint32_t outside;               // encoded facet of the simplex outside the cavity
+  int slot;                            // where p sits in v (= the facet index towards `outside`)
+};
+
+template <int D>
+class Restar {
+  static constexpr int V = D + 1;
+  static constexpr std::uint32_t kPaired = 0xFFFFFFFFu;
+
+ public:
+  // Replaces the cavity by the star of p.  Returns the id of a new simplex
+  // (a finite one if there is any), or sets `error` (and leaves the mesh possibly inconsistent) when
+  // the boundary is not a closed manifold.
+  std::uint32_t star(Mesh<D>& m, const std::vector<std::uint32_t>& cavity,
+                     const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+    // New simplices: cavity slots first, then fresh ones; link across the boundary.
+    ids_.resize(records.size());
+    std::uint32_t first = kNoNeighbour;
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      const BoundaryRecord<D>& rec = records[r];
+      std::uint32_t s;
+      if (r < cavity.size()) {
+        s = cavity[r];
+        m.assign(s, rec.v.data());
+      } else {
+        s = m.create(rec.v.data());
+      }
+      ids_[r] = s;
+      if (first == kNoNeighbour || (m.is_ghost(first) && rec.v[D] != kGhost)) first = s;
+      m.link(Mesh<D>::encode(s, rec.slot), rec.outside);
+    }
+    const bool ok = (D == 2 && records.size() <= 32) ? link_cycle(m, records, error)
+                                                     : link_hashed(m, records, error);
+    if (!ok) return kNoNeighbour;
+    for (std::size_t r = records.size(); r < cavity.size(); ++r) m.destroy(cavity[r]);
+    return first;
+  }
+
+  std::size_t bytes_reserved() const { return table_.capacity() * sizeof(Entry); }
+
+ private:
+  // 2D, small cavities: the boundary is one cycle.  New triangle r is
+  // (p, u_r, w_r) counterclockwise, with u_r, w_r the vertices after p's slot;
+  // its edge (w_r, p) (opposite u_r) is shared with the triangle whose u is w_r.
+  bool link_cycle(Mesh<D>& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+    // A 64-entry open-addressing table u -> record, marked by a stamp (k <= 32
+    // keys: load <= 1/2).
+    if (++cycle_stamp_ == 0) {
+      for (auto& e : cycle_) e.stamp = 0;
+      cycle_stamp_ = 1;
+    }
+    const std::size_t k = records.size();
+    auto hash = [](std::uint32_t v) { return static_cast<unsigned>((v * 0x9E3779B1u) >> 26); };
+    for (std::size_t r = 0; r < k; ++r) {
+      const std::uint32_t u = records[r].v[(records[r].slot + 1) % 3];
+      unsigned h = hash(u);
+      while (cycle_[h].stamp == cycle_stamp_) {
+        if (cycle_[h].vertex == u) {
+          error = "cavity boundary is not a simple cycle (a vertex starts two boundary edges)";
+          return false;
+        }
+        h = (h + 1) & 63;
+      }
+      cycle_[h] = {u, static_cast<std::uint32_t>(r), cycle_stamp_};
+    }
+    for (std::size_t r = 0; r < k; ++r) {
+      const int slot = records[r].slot;
+      const std::uint32_t w = records[r].v[(slot + 2) % 3];
+      unsigned h = hash(w);
+      while (cycle_[h].stamp == cycle_stamp_ && cycle_[h].vertex != w) h = (h + 1) & 63;
+      if (cycle_[h].stamp != cycle_stamp_) {
+        error = "cavity boundary is not closed (a boundary edge without a successor)";
+        return false;
+      }
+      const std::uint32_t next = cycle_[h].record;
+      m.link(Mesh<D>::encode(ids_[r], (slot + 1) % 3),
+             Mesh<D>::encode(ids_[next], (records[next].slot + 2) % 3));
+    }
+    return true;
+  }
+
+  bool link_hashed(Mesh<D>& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+    const std::size_t inserts = records.size() * D;  // facet registrations
+    if (table_.size() < 2 * inserts) {
+      std::size_t size = 64;
+      while (size < 2 * inserts) size *= 2;
+      table_.assign(size, Entry{});
+      stamp_ = 0;
+    }
+    if (++stamp_ == 0) {  // wrapped: clear once every 2^32 uses
+      for (auto& e : table_) e.stamp = 0;
+      stamp_ = 1;
+    }
+    const std::size_t mask = table_.size() - 1;
+    int shift = 64;
+    for (std::size_t t = table_.size(); t > 1; t >>= 1) --shift;
+
+    std::size_t pending = 0;
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      const BoundaryRecord<D>& rec = records[r];
+      const std::uint32_t s = ids_[r];
+      for (int f = 0; f < V; ++f) {
+        if (f == rec.slot) continue;
+        // The facet opposite f holds p and the vertices in slots other than f and rec.slot.
+        std::uint64_t key;
+        if constexpr (D == 2) {
+          key = rec.v[3 - f - rec.slot];
+        } else {
+          std::uint32_t ab[2];
+          int n = 0;
+          for (int i = 0; i < V; ++i)
+            if (i != f && i != rec.slot) ab[n++] = rec.v[i];
+          std::uint32_t a = ab[0], b = ab[1];
+          if (a > b) std::swap(a, b);
+          key = (std::uint64_t(a) << 32) | b;
+        }
+        std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift);
+        for (;;) {
+          Entry& e = table_[h];
+          if (e.stamp != stamp_) {
+            e = Entry{key, Mesh<D>::encode(s, f), stamp_};
+            ++pending;
+            break;
+          }
+          if (e.key == key) {
+            if (e.value == kPaired) {
+              error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
+              return false;
+            }
+            m.link(e.value, Mesh<D>::encode(s, f));
+            e.value = kPaired;
+            --pending;
+            break;
+          }
+          h = (h + 1) & mask;
+        }
+      }
+    }
+    if (pending != 0) {
+      error = "cavity boundary is not closed (a new facet without a partner)";
+      return false;
+    }
+    return true;
+  }
+
+  struct Entry {
+    std::uint64_t key = 0;
+    std::uint32_t value = 0;
+    std::uint32_t stamp = 0;
+  };
+  std::vector<Entry> table_;
+  std::vector<std::uint32_t> ids_;
+  struct CycleEntry {
+    std::uint32_t vertex = 0, record = 0, stamp = 0;
+  };
+  std::array<CycleEntry, 64> cycle_{};
+  std::uint32_t cycle_stamp_ = 0;
+  std::uint32_t stamp_ = 0;
+};
+
+}  // namespace dlab

@@ -1,0 +1,208 @@
+// A geometry-free simplicial mesh for D = 2 (triangles) and D = 3 (tetrahedra).
+//
+// Layout (design.md section 7, items 1 and 4; the compact array form used by the
+// fastest sequential codes, e.g. Marot, Pellerin, Remacle, "One machine, one
+// minute, three billion tetrahedra", IJNME 2019):
+//  - simplex s owns slots [s*(D+1), s*(D+1)+D] of two flat uint32 arrays:
+//      vertex(s, i)     its i-th vertex id (an index the caller gives meaning to);
+//      neighbour(s, i)  the simplex across the facet opposite vertex i, encoded as
+//                       t*(D+1) + j where j is that same facet's index in t, so
+//                       the way back costs nothing: neighbour(t, j) == s*(D+1)+i.
+//  - kGhost is the single ghost ("infinite") vertex.  Every hull facet F has a
+//    ghost simplex F + ghost on its outer side, so the mesh is a closed
+//    pseudo-manifold (a triangulated sphere S^D) and the finite simplices cover
+//    exactly the convex hull.  Invariant: the ghost vertex is always in slot D.
+//  - Orientation convention: a finite simplex (v0..vD) is positively oriented,
+//    det[v1-v0; ...; vD-v0] > 0.  A ghost simplex (v0..v{D-1}, ghost) is
+//    oriented so that putting any point q strictly outside the hull beyond its
+//    finite facet in slot D gives a positive simplex.  Replacing the vertex in
+//    slot i of a positive simplex by a point on the same side of facet i keeps it
+//    positive, which is why ghosts stay in slot D through cavity re-starring.
+//  - Deleted slots are kept on a free list and reused last-in-first-out (they
+//    are still in cache).  vertex(s, 0) == kDead marks a deleted slot.
+//  - mark(s): one uint32 per simplex for algorithms' stamps (cavity membership,
+//    visited flags): bump a counter instead of clearing sets.
+// The mesh never sees a coordinate: algorithms ask predicates on vertex ids.
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dlab {
+
+inline constexpr std::uint32_t kGhost = 0xFFFFFFFFu;  // the vertex at infinity
+inline constexpr std::uint32_t kDead = 0xFFFFFFFEu;   // vertex(s,0) of a deleted slot
+inline constexpr std::uint32_t kNoNeighbour = 0xFFFFFFFFu;
+
+template <int D>
+class Mesh {
+  static_assert(D == 2 || D == 3, "2D and 3D only");
+
+ public:
+  static constexpr int V = D + 1;  // vertices (and facets) per simplex
+  using Simplex = std::array<std::uint32_t, V>;
+
+  static constexpr std::uint32_t simplex_of(std::uint32_t enc) { return enc / V; }
+  static constexpr int facet_of(std::uint32_t enc) { return static_cast<int>(enc % V); }
+  static constexpr std::uint32_t encode(std::uint32_t s, int f) { return s * V + static_cast<std::uint32_t>(f); }
+
+  void clear() {
+    v_.clear();
+    nb_.clear();
+    mark_.clear();
+    free_.clear();
+    live_ = 0;
+  }
+  void reserve(std::size_t simplices) {
+    v_.reserve(simplices * V);
+    nb_.reserve(simplices * V);
+    mark_.reserve(simplices);
+  }
+
+  // Number of slots (live or free); simplex ids are < slots().
+  std::uint32_t slots() const { return static_cast<std::uint32_t>(mark_.size()); }
+  std::uint32_t live() const { return live_; }
+
+  std::uint32_t vertex(std::uint32_t s, int i) const { return v_[std::size_t(s) * V + i]; }
+  std::uint32_t& vertex(std::uint32_t s, int i) { return v_[std::size_t(s) * V + i]; }
+  const std::uint32_t* vertices(std::uint32_t s) const { return v_.data() + std::size_t(s) * V; }
+  std::uint32_t* vertices(std::uint32_t s) { return v_.data() + std::size_t(s) * V; }
+  Simplex simplex(std::uint32_t s) const {
+    Simplex r;
+    std::copy_n(vertices(s), V, r.begin());
+    return r;
+  }
+
+  std::uint32_t neighbour(std::uint32_t s, int i) const { return nb_[std::size_t(s) * V + i]; }
+  std::uint32_t neighbour_enc(std::uint32_t enc) const { return nb_[enc]; }
+  // Make facet a of one simplex and facet b of another mutual neighbours.
+  void link(std::uint32_t a, std::uint32_t b) {
+    nb_[a] = b;
+    nb_[b] = a;
+  }
+  void set_neighbour(std::uint32_t enc, std::uint32_t other) { nb_[enc] = other; }
+
+  bool alive(std::uint32_t s) const { return v_[std::size_t(s) * V] != kDead; }
+  // Ghost simplices carry the ghost vertex in slot D (invariant above).
+  bool is_ghost(std::uint32_t s) const { return v_[std::size_t(s) * V + D] == kGhost; }
+
+  std::uint32_t mark(std::uint32_t s) const { return mark_[s]; }
+  void set_mark(std::uint32_t s, std::uint32_t m) { mark_[s] = m; }
+
+  // A new simplex with the given vertices and unset neighbours; reuses the most
+  // recently freed slot first.
+  std::uint32_t create(const std::uint32_t* verts) {
+    std::uint32_t s;
+    if (!free_.empty()) {
+      s = free_.back();
+      free_.pop_back();
+    } else {
+      s = slots();
+      v_.resize(v_.size() + V);
+      nb_.resize(nb_.size() + V, kNoNeighbour);
+      mark_.push_back(0);
+    }
+    std::copy_n(verts, V, vertices(s));
+    ++live_;
+    return s;
+  }
+  std::uint32_t create(const Simplex& verts) { return create(verts.data()); }
+
+  void destroy(std::uint32_t s) {
+    v_[std::size_t(s) * V] = kDead;
+    free_.push_back(s);
+    --live_;
+  }
+
+  // Overwrite the vertices of a live slot (re-using a cavity slot in place).
+  void assign(std::uint32_t s, const std::uint32_t* verts) { std::copy_n(verts, V, vertices(s)); }
+
+  // Bytes held by the mesh's arrays (capacity, not size): the memory cost.
+  std::size_t bytes_reserved() const {
+    return (v_.capacity() + nb_.capacity() + mark_.capacity() + free_.capacity()) *
+           sizeof(std::uint32_t);
+  }
+
+  // Finite live simplices, in slot order.
+  template <class F>
+  void for_each_finite(F&& f) const {
+    for (std::uint32_t s = 0; s < slots(); ++s)
+      if (alive(s) && !is_ghost(s)) f(s);
+  }
+  std::size_t count_finite() const {
+    std::size_t n = 0;
+    for_each_finite([&](std::uint32_t) { ++n; });
+    return n;
+  }
+
+  // Links the facets of the given simplices that carry the same vertex set
+  // (brute force: meant for the handful of simplices of an initial
+  // configuration or a test).  Returns false if a facet is shared by more than
+  // two of them.
+  bool link_by_facets(const std::vector<std::uint32_t>& ids) {
+    auto facet_key = [&](std::uint32_t s, int f) {
+      std::array<std::uint32_t, D> k;
+      int n = 0;
+      for (int i = 0; i < V; ++i)
+        if (i != f) k[n++] = vertex(s, i);
+      std::sort(k.begin(), k.end());
+      return k;
+    };
+    for (std::size_t a = 0; a < ids.size(); ++a)
+      for (int fa = 0; fa < V; ++fa) {
+        const auto ka = facet_key(ids[a], fa);
+        int found = 0;
+        for (std::size_t b = 0; b < ids.size(); ++b)
+          for (int fb = 0; fb < V; ++fb)
+            if (b != a && facet_key(ids[b], fb) == ka) {
+              nb_[encode(ids[a], fa)] = encode(ids[b], fb);
+              ++found;
+            }
+        if (found > 1) return false;
+      }
+    return true;
+  }
+
+  // Structural self-check (no geometry): every live simplex's neighbours are
+  // live, point back, and share the facet's vertex set; ghosts keep the ghost in
+  // slot D only.  Returns an empty string when consistent.
+  std::string check_structure() const;
+
+ private:
+  std::vector<std::uint32_t> v_;
+  std::vector<std::uint32_t> nb_;
+  std::vector<std::uint32_t> mark_;
+  std::vector<std::uint32_t> free_;
+  std::uint32_t live_ = 0;
+};
+
+template <int D>
+std::string Mesh<D>::check_structure() const {
+  for (std::uint32_t s = 0; s < slots(); ++s) {
+    if (!alive(s)) continue;
+    for (int i = 0; i < D; ++i)
+      if (vertex(s, i) == kGhost) return "ghost vertex outside slot D in simplex " + std::to_string(s);
+    for (int i = 0; i < V; ++i) {
+      const std::uint32_t n = neighbour(s, i);
+      if (n == kNoNeighbour || simplex_of(n) >= slots() || !alive(simplex_of(n)))
+        return "simplex " + std::to_string(s) + " facet " + std::to_string(i) + ": no live neighbour";
+      if (nb_[n] != encode(s, i))
+        return "simplex " + std::to_string(s) + " facet " + std::to_string(i) + ": neighbour does not point back";
+      std::array<std::uint32_t, D> a, b;
+      int na = 0, nbn = 0;
+      for (int j = 0; j < V; ++j) {
+        if (j != i) a[na++] = vertex(s, j);
+        if (j != facet_of(n)) b[nbn++] = vertex(simplex_of(n), j);
+      }
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      if (a != b) return "simplex " + std::to_string(s) + " facet " + std::to_string(i) + ": vertex sets differ";
+    }
+  }
+  return {};
+}
+
+}  // namespace dlab

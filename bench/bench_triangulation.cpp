@@ -1,0 +1,157 @@
+// dlab against CGAL on the same points in the same run (issue 3).
+// For each point set: CGAL Delaunay_triangulation_2/3 (Epick, range insertion
+// with CGAL's spatial sort) and dlab::run() for each requested kernel; prints
+// seconds, the ratio dlab/CGAL, and peak memory per point. Each measurement
+// runs in a forked child so its peak resident size is its own.
+//
+// usage: dlab_bench_triangulation [--dim 2|3] [--n N] [--set uniform|grid]
+//                                 [--kernels adaptive,mp,...] [--algo A] [--repeat R]
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "variants/run.hpp"
+#include "bench/bench_points.hpp"
+
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+struct Measure {
+  double seconds = 0;
+  double bytes = 0;       // resident growth during the run (peak - before)
+  double simplices = 0;
+  bool ok = true;
+};
+
+long resident_kib(const char* key) {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind(key, 0) == 0) return std::strtol(line.c_str() + std::strlen(key), nullptr, 10);
+  return 0;
+}
+
+// Runs `job` in a child process; the child reports seconds, memory growth and
+// simplex count through a pipe.
+template <class Job>
+Measure in_child(Job job) {
+  int fd[2];
+  if (pipe(fd) != 0) std::abort();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    const long before = resident_kib("VmRSS:");
+    Measure m = job();
+    m.bytes = double(resident_kib("VmHWM:") - before) * 1024.0;
+    if (write(fd[1], &m, sizeof m) != sizeof m) _exit(3);
+    _exit(0);
+  }
+  close(fd[1]);
+  Measure m;
+  const bool got = read(fd[0], &m, sizeof m) == sizeof m;
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!got) m.ok = false;
+  return m;
+}
+
+template <class Clock = std::chrono::steady_clock>
+double since(typename Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Measure cgal_run(const dlab::PointSet& ps) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Measure m;
+  if (ps.dimension == 2) {
+    std::vector<Epick::Point_2> pts;
+    pts.reserve(ps.p2.size());
+    for (const auto& p : ps.p2) pts.emplace_back(p[0], p[1]);
+    CGAL::Delaunay_triangulation_2<Epick> dt(pts.begin(), pts.end());
+    m.seconds = since(t0);
+    m.simplices = double(dt.number_of_faces());
+  } else {
+    std::vector<Epick::Point_3> pts;
+    pts.reserve(ps.p3.size());
+    for (const auto& p : ps.p3) pts.emplace_back(p[0], p[1], p[2]);
+    CGAL::Delaunay_triangulation_3<Epick> dt(pts.begin(), pts.end());
+    m.seconds = since(t0);
+    m.simplices = double(dt.number_of_finite_cells());
+  }
+  return m;
+}
+
+Measure dlab_run(const dlab::PointSet& ps, const dlab::RunOptions& opt) {
+  Measure m;
+  const dlab::RunResult r = dlab::run(ps, opt);
+  m.seconds = r.seconds;
+  m.simplices = double(r.simplices.size() / std::size_t(ps.dimension + 1));
+  m.ok = r.outcome == dlab::RunResult::Outcome::ok;
+  return m;
+}
+
+std::vector<std::string> split_commas(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int dim = 2;
+  std::size_t n = 100000;
+  std::string set = "uniform", algo = "bowyer-watson", kernels = "adaptive";
+  int repeat = 1;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--dim") dim = std::atoi(value.c_str());
+    else if (key == "--n") n = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--set") set = value;
+    else if (key == "--algo") algo = value;
+    else if (key == "--kernels") kernels = value;
+    else if (key == "--repeat") repeat = std::atoi(value.c_str());
+    else { std::fprintf(stderr, "unknown option %s\n", key.c_str()); return 2; }
+  }
+  const dlab::PointSet ps = dlab::bench::make_points(set, dim, n);
+  std::printf("# %dD %s, %zu points, %s; best of %d\n", dim, set.c_str(), ps.size(), algo.c_str(),
+              repeat);
+  std::printf("%-22s %10s %10s %12s %12s\n", "run", "seconds", "ratio", "bytes/point", "simplices");
+
+  auto best = [&](auto job) {
+    Measure b;
+    for (int r = 0; r < repeat; ++r) {
+      Measure m = in_child(job);
+      if (r == 0 || m.seconds < b.seconds) b = m;
+    }
+    return b;
+  };
+  const Measure cgal = best([&] { return cgal_run(ps); });
+  std::printf("%-22s %10.3f %10.2f %12.0f %12.0f\n", "cgal-epick", cgal.seconds, 1.0,
+              cgal.bytes / double(ps.size()), cgal.simplices);
+  for (const std::string& kernel : split_commas(kernels)) {
+    dlab::RunOptions opt;
+    opt.algorithm = algo;
+    opt.kernel = kernel;
+    const Measure m = best([&] { return dlab_run(ps, opt); });
+    std::printf("%-22s %10.3f %10.2f %12.0f %12.0f%s\n", ("dlab-" + kernel).c_str(), m.seconds,
+                m.seconds / cgal.seconds, m.bytes / double(ps.size()), m.simplices,
+                m.ok ? "" : "  (failed)");
+  }
+  return 0;
+}

@@ -1,0 +1,14 @@
+// The subcommands of `dlab` (design.md section 5). Each returns the exit
+// status: 0 success, 1 failure of the algorithm / an invalid result, 2 bad
+// input or usage. argv[0] is "dlab", argv[1] the subcommand name.
+#pragma once
+
+namespace dlab::cli {
+
+int cmd_triangulate(int argc, char** argv);
+int cmd_check(int argc, char** argv);
+int cmd_predicate(int argc, char** argv);
+int cmd_gen(int argc, char** argv);
+int cmd_demo(int argc, char** argv);
+
+}  // namespace dlab::cli

@@ -1,0 +1,51 @@
+// `dlab`: subcommand dispatch only (the contract is design.md section 5).
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string_view>
+
+#include "cli/commands.hpp"
+
+namespace {
+
+const char* const kUsage =
+    "usage:\n"
+    "  dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
+    "                   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE]\n"
+    "                   [--stats FILE.json]\n"
+    "  dlab check INPUT SIMPLICES       exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
+    "  dlab predicate NAME K COORD...   NAME: orient2d incircle orient3d insphere; prints -1, 0 or 1\n"
+    "  dlab gen GENERATOR [options]     writes a point set (dlab gen --help lists generators)\n"
+    "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
+    "A: bowyer-watson (default), lawson, tanemura, george. K: adaptive (default), integer, mp,\n"
+    "float, epsilon. INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), or a\n"
+    "Triangle/TetGen .node file; '-' is standard input.\n"
+    "Exit status: 0 success, 1 the algorithm failed or its result is invalid, 2 bad input or usage.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::ios::sync_with_stdio(false);
+  if (argc < 2) {
+    std::cerr << kUsage;
+    return 2;
+  }
+  const std::string_view cmd = argv[1];
+  try {
+    if (cmd == "triangulate") return dlab::cli::cmd_triangulate(argc, argv);
+    if (cmd == "check") return dlab::cli::cmd_check(argc, argv);
+    if (cmd == "predicate") return dlab::cli::cmd_predicate(argc, argv);
+    if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
+    if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
+    if (cmd == "help" || cmd == "--help" || cmd == "-h") {
+      std::cout << kUsage;
+      return 0;
+    }
+  } catch (const std::exception& e) {  // each command reports its own errors; this is a backstop
+    std::cerr << "dlab " << cmd << ": internal error: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << "dlab: unknown command '" << cmd << "'\n" << kUsage;
+  return 2;
+}

@@ -1,0 +1,120 @@
+// See numbers.hpp. std::from_chars does not take a leading '+' nor a "0x"
+// prefix (its hex format is the bare digits), so both are handled here.
+#include "cli/numbers.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <system_error>
+
+namespace dlab::io {
+namespace {
+
+bool is_hex_digit(char c) {
+  return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+}
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+}  // namespace
+
+ParsedDouble parse_double(std::string_view tok) {
+  ParsedDouble out;
+  bool negative = false;
+  std::string_view body = tok;
+  if (!body.empty() && (body.front() == '+' || body.front() == '-')) {
+    negative = body.front() == '-';
+    body.remove_prefix(1);
+  }
+  bool hex = body.size() >= 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X');
+  if (hex) body.remove_prefix(2);
+  if (body.empty()) return out;
+  // The first character must start a number (from_chars would also read
+  // "inf"/"nan", handled below only for the decimal form).
+  const char c0 = body.front();
+  if (hex ? !(is_hex_digit(c0) || c0 == '.') : !(is_digit(c0) || c0 == '.')) {
+    if (!hex) {
+      double v = 0;
+      auto r = std::from_chars(body.data(), body.data() + body.size(), v);
+      if (r.ec == std::errc() && r.ptr == body.data() + body.size()) {
+        if (std::isnan(v)) out.status = ParseStatus::nan;
+        else if (std::isinf(v)) out.status = ParseStatus::infinity;
+      }
+    }
+    return out;
+  }
+  double v = 0;
+  auto r = std::from_chars(body.data(), body.data() + body.size(), v,
+                           hex ? std::chars_format::hex : std::chars_format::general);
+  if (r.ptr != body.data() + body.size()) return out;  // trailing garbage or nothing read
+  if (r.ec == std::errc::result_out_of_range) {
+    // libstdc++ reports both overflow and underflow-to-zero this way and leaves v
+    // unset; strtod (C locale: this program never calls setlocale) says which.
+    // Only the direction is taken from it; an underflow then is a signed zero,
+    // which is the correctly rounded value (from_chars returns subnormals itself).
+    const std::string copy(tok);
+    const double s = std::strtod(copy.c_str(), nullptr);
+    if (std::isinf(s)) {
+      out.status = ParseStatus::out_of_range;
+      return out;
+    }
+    v = 0;
+  } else if (r.ec != std::errc()) {
+    return out;
+  }
+  out.status = ParseStatus::ok;
+  out.value = negative ? -v : v;
+  return out;
+}
+
+std::string describe(ParseStatus status, std::string_view token) {
+  // Quoted, at most 40 characters, control and non-ASCII bytes as \xNN.
+  std::string t = "'";
+  for (char c : token.substr(0, 40)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+      t += c;
+    } else {
+      static const char* hexd = "0123456789abcdef";
+      t += "\\x";
+      t += hexd[u >> 4];
+      t += hexd[u & 15];
+    }
+  }
+  t += token.size() > 40 ? "...'" : "'";
+  std::string r;
+  switch (status) {
+    case ParseStatus::ok: r = "ok"; break;
+    case ParseStatus::nan: r = "NaN coordinate "; r += t; break;
+    case ParseStatus::infinity: r = "infinite coordinate "; r += t; break;
+    case ParseStatus::out_of_range: r = "coordinate "; r += t; r += " overflows to infinity"; break;
+    case ParseStatus::malformed: r = "unparsable number "; r += t; break;
+  }
+  return r;
+}
+
+std::optional<std::uint64_t> parse_u64(std::string_view tok, std::uint64_t max) {
+  if (tok.empty() || !is_digit(tok.front())) return std::nullopt;
+  std::uint64_t v = 0;
+  auto r = std::from_chars(tok.data(), tok.data() + tok.size(), v, 10);
+  if (r.ec != std::errc() || r.ptr != tok.data() + tok.size() || v > max) return std::nullopt;
+  return v;
+}
+
+std::string format_hex(double x) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::hex);
+  std::string s(buf, r.ptr);
+  if (!std::isfinite(x)) return s;  // never produced by our writers
+  const std::size_t at = (s.front() == '-') ? 1 : 0;
+  s.insert(at, "0x");
+  return s;
+}
+
+std::string format_decimal(double x) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace dlab::io

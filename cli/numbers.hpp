@@ -1,0 +1,40 @@
+// Text <-> double and integer conversions shared by every reader and writer of
+// the `dlab` command. Deterministic and locale-independent: std::from_chars /
+// std::to_chars (C++17 [charconv]: correctly rounded, exact round trip).
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace dlab::io {
+
+enum class ParseStatus { ok, nan, infinity, out_of_range, malformed };
+
+struct ParsedDouble {
+  ParseStatus status = ParseStatus::malformed;
+  double value = 0;
+};
+
+// One token, as C's strtod would read the whole of it: optional sign, then a
+// decimal float ("1.5e-3", ".5", "7.") or a C99 hexadecimal float ("0x1.8p-3",
+// "0X1P4", "0x.8"). A finite value that underflows gives the correctly rounded
+// result (subnormal or signed zero); a value that overflows is out_of_range.
+// "nan"/"inf"/"infinity" are recognised and reported as such.
+ParsedDouble parse_double(std::string_view token);
+
+// Human-readable reason for a non-ok status, e.g. "NaN coordinate 'nan'".
+std::string describe(ParseStatus status, std::string_view token);
+
+// Non-negative decimal integer without sign; nullopt if malformed or > max.
+std::optional<std::uint64_t> parse_u64(std::string_view token,
+                                       std::uint64_t max = UINT64_MAX);
+
+// C99 "%a"-style hexadecimal float, e.g. "0x1.8p-3", "-0x0p+0",
+// "0x0.0000000000001p-1022"; exact, and parse_double reads it back bit for bit.
+std::string format_hex(double x);
+
+// Shortest decimal that reads back to exactly x (std::to_chars); e.g. "0.1", "1e-300".
+std::string format_decimal(double x);
+
+}  // namespace dlab::io

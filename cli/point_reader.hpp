@@ -1,0 +1,42 @@
+// Reading INPUT point sets (design.md section 5):
+//  * plain text: one point per line, 2 or 3 coordinates separated by blanks
+//    and/or commas, decimal or C99 hexadecimal floats, '#' starts a comment,
+//    blank lines ignored; the dimension is the number of coordinates on the
+//    first data line and every data line must agree;
+//  * Triangle / TetGen .node files (chosen by the file name's extension):
+//    header "<#points> <dimension> <#attributes> <#boundary markers>", then
+//    "index x y [z] [attributes...] [marker]" with indices numbered
+//    consecutively from 0 or from 1.
+// Every problem is an InputError whose message is "FILE:LINE: problem" (or
+// "FILE: problem" when no line applies, e.g. a file that cannot be opened).
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "variants/run.hpp"
+
+namespace dlab::io {
+
+// Bad input: the command reports what() and exits with status 2.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// "-" reads standard input (always the plain text format).
+PointSet read_points(const std::string& path);
+
+// Parses text already in memory; `name` is used in messages only.
+// Never crashes on any byte sequence: every failure is an InputError.
+PointSet parse_points(std::string_view text, const std::string& name, bool node_format);
+
+// True if the path ends in ".node" (any case).
+bool is_node_file(std::string_view path);
+
+// Reads a whole file ("-": standard input); InputError "FILE: cannot read: reason".
+std::string read_file(const std::string& path);
+
+// The name used in messages for a path ("-" is "<stdin>").
+std::string display_name(const std::string& path);
+
+}  // namespace dlab::io

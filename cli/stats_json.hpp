@@ -1,0 +1,34 @@
+// The --stats JSON object of `dlab triangulate` (design.md section 5). Keys in
+// this fixed order: algorithm, kernel, policy, order, seed, dimension,
+// input_points, distinct_points, simplices, seconds, peak_rss_bytes,
+// predicates, counters, snapping, outcome, message. Everything but `seconds`
+// and `peak_rss_bytes` is a function of the input, the options and the seed,
+// so the file is byte-identical across runs apart from those two values.
+#pragma once
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "variants/run.hpp"
+
+namespace dlab::io {
+
+struct StatsRecord {
+  RunOptions options;
+  std::size_t input_points = 0;
+  const RunResult* result = nullptr;
+  std::string outcome;   // "ok", "lower_dimensional", "failed", "invalid"
+  std::string message;
+  std::uint64_t peak_rss_bytes = 0;
+};
+
+void write_stats_json(std::ostream& out, const StatsRecord& r);
+
+// JSON string literal with escapes (control bytes as \u00XX).
+std::string json_string(std::string_view s);
+
+// Peak resident set size of this process (getrusage ru_maxrss, KiB -> bytes).
+std::uint64_t peak_rss_bytes();
+
+}  // namespace dlab::io

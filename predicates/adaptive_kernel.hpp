@@ -1,0 +1,240 @@
+// `adaptive`: Shewchuk's adaptive-precision predicates, written from the
+// mathematics of J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic
+// and Fast Robust Geometric Predicates", DCG 18 (1997), section 4 (orient2d,
+// orient3d, incircle, insphere; stages A, B, C, D), preceded by a semi-static
+// filter (bound from the largest |coordinate difference| per axis, as in the
+// filters of CGAL and Geogram; our own constants, derived below).
+//
+// Stages (stage_names): 0 "filter", 1 "A", 2 "B", 3 "C", 4 "D", 5 "mp".
+//   filter: |det| > c * (product of per-axis maxima)        (inline, this file)
+//   A:      |det| > errboundA * permanent                    (adaptive_kernel.cpp)
+//   B:      exact expansion of the determinant of the rounded differences
+//   C:      B + first-order correction by the differences' roundoff tails
+//   D:      exact determinant (expansion arithmetic)
+//   mp:     MpKernel, when the inputs are outside the proven exponent range.
+// Every bound and every guard is derived in predicates/error_bounds.md.
+//
+// Exact for every finite double input inside the documented exponent range
+// (error_bounds.md section 2); outside it the answer comes from MpKernel.
+// Non-finite inputs are outside every contract (MpKernel is asked anyway).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string_view>
+
+#include "predicates/kernel.hpp"
+
+namespace dlab {
+
+namespace adaptive {
+
+inline constexpr double eps = 0x1p-53;  // half an ulp of 1: fl(x) = x(1 + d), |d| <= eps
+
+// ---- Semi-static filter constants (error_bounds.md section 3) -------------------
+// Forward error calculus on bounds: every computed node x^ carries (m, e) with
+// |x^| <= m and |x^ - x| <= e, in units of the product of the per-axis maxima
+// of its variables (x = the exact value on exact coordinate differences).
+struct Eb {
+  double m, e;
+};
+// A rounded coordinate difference d^ = fl(p - q): |d^| <= max, |d^ - d| <= eps |d^|.
+inline constexpr Eb diff_node{1.0, eps};
+constexpr Eb mul(Eb x, Eb y) {
+  return {x.m * y.m * (1 + eps), eps * x.m * y.m + x.m * y.e + (y.m + y.e) * x.e};
+}
+constexpr Eb add(Eb x, Eb y) { return {(x.m + y.m) * (1 + eps), eps * (x.m + y.m) + x.e + y.e}; }
+// The last operation z = fl(x +- y) is not counted: sign(fl(v)) = sign(v), and
+// |x +- y| >= |z| / (1 + eps). The bound c * M1 * ... * Mr is itself computed
+// with r roundings (each can lose a factor 1 + eps). 2^-40 covers the rounding
+// of this constexpr evaluation; 2^-260 covers gradual-underflow crumbs allowed
+// by the range guards (error_bounds.md 3.2).
+constexpr double filter_constant(Eb x, Eb y, int r) {
+  double c = (x.e + y.e) * (1 + eps);
+  for (int i = 0; i < r; ++i) c *= 1 + eps;
+  return c * (1 + 0x1p-40) + 0x1p-260;
+}
+constexpr Eb minor2() { return add(mul(diff_node, diff_node), mul(diff_node, diff_node)); }
+constexpr Eb lift2() { return add(mul(diff_node, diff_node), mul(diff_node, diff_node)); }
+constexpr Eb lift3() { return add(lift2(), mul(diff_node, diff_node)); }
+constexpr Eb minor3() { return add(add(mul(diff_node, minor2()), mul(diff_node, minor2())), mul(diff_node, minor2())); }
+
+// orient2d: det = acx*bcy - acy*bcx;   bound = c * mx * my. (Derived for
+// comparison only: orient2d uses stage A inline instead, see below.)
+inline constexpr double o2_filter =
+    filter_constant(mul(diff_node, diff_node), mul(diff_node, diff_node), 2);
+// orient3d: det = (adz*m1 + bdz*m2) + cdz*m3;   bound = c * mx * my * mz.
+inline constexpr double o3_filter =
+    filter_constant(add(mul(diff_node, minor2()), mul(diff_node, minor2())),
+                    mul(diff_node, minor2()), 3);
+// incircle: det = (L_a*m_a + L_b*m_b) + L_c*m_c;   bound = c * mx * my * M * M, M = max(mx, my).
+inline constexpr double ic_filter =
+    filter_constant(add(mul(lift2(), minor2()), mul(lift2(), minor2())), mul(lift2(), minor2()), 4);
+// insphere: det = (L_d*M_d - L_c*M_c) + (L_b*M_b - L_a*M_a);   bound = c * mx*my*mz * M * M.
+inline constexpr double is_filter =
+    filter_constant(add(mul(lift3(), minor3()), mul(lift3(), minor3())),
+                    add(mul(lift3(), minor3()), mul(lift3(), minor3())), 5);
+
+// Filter guard (error_bounds.md 3.2): every per-axis maximum >= lo (no harmful
+// underflow; the bound itself stays normal), and det finite (no overflow).
+inline constexpr double o3_lo = 0x1p-315, ic_lo = 0x1p-235, is_lo = 0x1p-185;
+// Exact-stage guard (error_bounds.md 2): every |coordinate difference| <= hi.
+inline constexpr double o2_hi = 0x1p+490, o3_hi = 0x1p+325, ic_hi = 0x1p+245, is_hi = 0x1p+195;
+// Inline orient2d stage A: permanent >= this (error_bounds.md 4.6).
+inline constexpr double o2_fast_min = 0x1p-900;
+
+// Published constants (design.md section 7 item 6) for comparison; ours are
+// derived independently and checked in tests/test_adaptive_kernel.cpp.
+inline constexpr double published_o2 = 8.8872057372592798e-16;
+inline constexpr double published_o3 = 5.1107127829973299e-15;
+inline constexpr double published_ic = 8.8878565762001373e-15;
+inline constexpr double published_is = 1.2466136531027298e-13;
+
+// ---- Stage constants (error_bounds.md section 4) ---------------------------------
+// Stage X answers when |det_X| > (bound) with bound = XA * permanent (A),
+// XB * permanent (B), XC * permanent + result_err * |det_C| (C).
+inline constexpr double e2 = eps * eps;
+inline constexpr double result_err = (3.0 + 8.0 * eps) * eps;
+inline constexpr double o2A = (3.0 + 16.0 * eps) * eps, o2B = (2.0 + 12.0 * eps) * eps,
+                        o2C = (9.0 + 64.0 * eps) * e2;
+inline constexpr double o3A = (7.0 + 56.0 * eps) * eps, o3B = (3.0 + 28.0 * eps) * eps,
+                        o3C = (26.0 + 288.0 * eps) * e2;
+inline constexpr double icA = (10.0 + 96.0 * eps) * eps, icB = (4.0 + 48.0 * eps) * eps,
+                        icC = (44.0 + 576.0 * eps) * e2;
+inline constexpr double isA = (16.0 + 224.0 * eps) * eps, isB = (5.0 + 72.0 * eps) * eps,
+                        isC = (80.0 + 4096.0 * eps) * e2;  // our own stage-C formula (4.4)
+
+// Out-of-line stages A..D and the mp fallback (adaptive_kernel.cpp).
+Staged orient2d_slow(const Point2& a, const Point2& b, const Point2& c);
+Staged incircle_slow(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+Staged orient3d_slow(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+Staged insphere_slow(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                     const Point3& e);
+
+inline constexpr unsigned char stage_filter = 0, stage_a = 1, stage_b = 2, stage_c = 3,
+                               stage_d = 4, stage_mp = 5;
+
+// The filter's test, branch-free: |det| > bound, det finite (an infinite det means
+// some intermediate overflowed: never trusted), every per-axis maximum >= lo.
+inline bool filter_ok(double det, double bound, double min_axis_max, double lo) {
+  const double ad = std::fabs(det);
+  return (ad > bound) & (ad < std::numeric_limits<double>::infinity()) & (min_axis_max >= lo);
+}
+// Sign of a nonzero det.
+inline Sign sign_nonzero(double det) { return det < 0 ? Sign::negative : Sign::positive; }
+
+}  // namespace adaptive
+
+struct AdaptiveKernel {
+  static constexpr bool exact = true;
+  static constexpr std::string_view name = "adaptive";
+  static constexpr std::array<std::string_view, 6> stage_names = {"filter", "A", "B",
+                                                                  "C",      "D", "mp"};
+
+  // orient2d has no semi-static filter: Shewchuk's stage A (bound 3 eps times the
+  // permanent |acx bcy| + |acy bcx|) is as cheap and sharper. Inline guard
+  // (error_bounds.md 4.6): permanent >= 2^-900, so that gradual-underflow crumbs
+  // (at most 2^-1074) sit far inside the bound's second-order slack; overflow
+  // makes the permanent infinite and the test false.
+  static Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) {
+    const double acx = a[0] - c[0], bcx = b[0] - c[0];
+    const double acy = a[1] - c[1], bcy = b[1] - c[1];
+    const double dl = acx * bcy, dr = acy * bcx;
+    const double det = dl - dr;
+    const double perm = std::fabs(dl) + std::fabs(dr);
+    const double bound = adaptive::o2A * perm;
+    if (perm >= adaptive::o2_fast_min) {
+      if (det > bound) return {Sign::positive, adaptive::stage_a};
+      if (-det > bound) return {Sign::negative, adaptive::stage_a};
+    }
+    return adaptive::orient2d_slow(a, b, c);
+  }
+
+  static Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c,
+                                const Point2& d) {
+    const double adx = a[0] - d[0], ady = a[1] - d[1];
+    const double bdx = b[0] - d[0], bdy = b[1] - d[1];
+    const double cdx = c[0] - d[0], cdy = c[1] - d[1];
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double bc = bdx * cdy - bdy * cdx;
+    const double ca = cdx * ady - cdy * adx;
+    const double ab = adx * bdy - ady * bdx;
+    const double det = (alift * bc + blift * ca) + clift * ab;
+    const double mx = std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx));
+    const double my = std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy));
+    const double mmax = std::max(mx, my);
+    if (adaptive::filter_ok(det, adaptive::ic_filter * mx * my * mmax * mmax, std::min(mx, my),
+                            adaptive::ic_lo))
+      return {adaptive::sign_nonzero(det), adaptive::stage_filter};
+    return adaptive::incircle_slow(a, b, c, d);
+  }
+
+  static Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d) {
+    const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
+    const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
+    const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
+    const double det = (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx)) +
+                       cdz * (adx * bdy - ady * bdx);
+    const double mx = std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx));
+    const double my = std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy));
+    const double mz = std::max(std::max(std::fabs(adz), std::fabs(bdz)), std::fabs(cdz));
+    if (adaptive::filter_ok(det, adaptive::o3_filter * mx * my * mz, std::min(std::min(mx, my), mz),
+                            adaptive::o3_lo))
+      return {adaptive::sign_nonzero(det), adaptive::stage_filter};
+    return adaptive::orient3d_slow(a, b, c, d);
+  }
+
+  static Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d, const Point3& e) {
+    const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+    const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+    const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+    const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+    const double ab = aex * bey - bex * aey;
+    const double bc = bex * cey - cex * bey;
+    const double cd = cex * dey - dex * cey;
+    const double da = dex * aey - aex * dey;
+    const double ac = aex * cey - cex * aey;
+    const double bd = bex * dey - dex * bey;
+    const double abc = (aez * bc - bez * ac) + cez * ab;
+    const double bcd = (bez * cd - cez * bd) + dez * bc;
+    const double cda = (cez * da + dez * ac) + aez * cd;
+    const double dab = (dez * ab + aez * bd) + bez * da;
+    const double alift = (aex * aex + aey * aey) + aez * aez;
+    const double blift = (bex * bex + bey * bey) + bez * bez;
+    const double clift = (cex * cex + cey * cey) + cez * cez;
+    const double dlift = (dex * dex + dey * dey) + dez * dez;
+    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    const double mx = std::max(std::max(std::fabs(aex), std::fabs(bex)),
+                               std::max(std::fabs(cex), std::fabs(dex)));
+    const double my = std::max(std::max(std::fabs(aey), std::fabs(bey)),
+                               std::max(std::fabs(cey), std::fabs(dey)));
+    const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
+                               std::max(std::fabs(cez), std::fabs(dez)));
+    const double mmax = std::max(std::max(mx, my), mz);
+    if (adaptive::filter_ok(det, adaptive::is_filter * mx * my * mz * mmax * mmax,
+                            std::min(std::min(mx, my), mz), adaptive::is_lo))
+      return {adaptive::sign_nonzero(det), adaptive::stage_filter};
+    return adaptive::insphere_slow(a, b, c, d, e);
+  }
+
+  Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const {
+    return orient2d_staged(a, b, c).sign;
+  }
+  Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    return incircle_staged(a, b, c, d).sign;
+  }
+  Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    return orient3d_staged(a, b, c, d).sign;
+  }
+  Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                const Point3& e) const {
+    return insphere_staged(a, b, c, d, e).sign;
+  }
+};
+
+}  // namespace dlab

@@ -1,0 +1,233 @@
+// `integer`: George's integer-coordinate kernel (George 1997, section 2.3:
+// volumes computed exactly on coordinates converted to integers).
+//
+// Each double coordinate is mapped to its index on the kernel's grid
+// (predicates/integer_grid.hpp: nearest grid point, clamped to the box), and
+// the determinant is computed exactly in integers. The answer is the exact
+// sign for the snapped points, and it is consistent for every input (the
+// snapping is a fixed function of the point). Snap first (`snap_all`) to
+// triangulate exactly the points the kernel sees.
+//
+// Bit budget (B = bits per axis; every index difference d has |d| <= 2^B - 1,
+// so |d| < 2^B; bounds below are strict, each term and partial sum included):
+//   product d*d'                  < 2^(2B)
+//   2x2 minor  d1 d2' - d2 d1'    < 2^(2B+1)
+//   2D lift    dx^2 + dy^2        < 2^(2B+1)
+//   3D lift    dx^2 + dy^2 + dz^2 < 3 2^(2B)    < 2^(2B+2)
+//   orient2d   = one 2x2 minor    < 2^(2B+1)
+//   incircle   = sum of 3 lift*minor            < 3 2^(4B+2) < 2^(4B+4)
+//   orient3d   = sum of 3 d*minor (a 3x3 minor) < 3 2^(3B+1) < 2^(3B+3)
+//   insphere   = sum of 4 lift*(3x3 minor)      < 4 2^(2B+2) 2^(3B+3) = 2^(5B+7)
+// Each stage is computed in IntFor<bound> (predicates/wide_int.hpp), the
+// narrowest of int64 / __int128 / WideInt<N> holding it; static_asserts below
+// restate each bound against its type's capacity.
+//
+// Choice of B. The default IntegerKernel uses B = 62 in 2D and in 3D, the
+// largest B for which every stage still fits the next machine-friendly width
+// (index differences in int64 need B <= 63; 3D lifts in __int128 and
+// insphere in 320 bits need B <= 62; the finer the grid, the less snapping
+// moves, see integer_grid.hpp). Types at B = 62:
+//   orient2d 125 bits -> __int128;   incircle 252 bits -> WideInt<4> (256-bit)
+//   orient3d 189 bits -> WideInt<3>; insphere 317 bits -> WideInt<5> (320-bit)
+// IntegerKernel128 uses B = 30 (2D: incircle 124 bits) and B = 24 (3D:
+// insphere 127 bits), the largest B for which every predicate fits __int128:
+// coarser grids, cheaper arithmetic.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "predicates/integer_grid.hpp"
+#include "predicates/kernel.hpp"
+#include "predicates/wide_int.hpp"
+
+namespace dlab {
+
+// Exact determinants on integer grid indices; precondition: on every axis the
+// indices of the points differ by at most 2^B - 1. Returns the exact value.
+namespace intdet {
+
+using I2 = std::array<std::int64_t, 2>;
+using I3 = std::array<std::int64_t, 3>;
+
+template <int B>
+struct Budget {
+  static_assert(B >= 3 && B <= 62, "differences and lifts must fit the types below");
+  using Minor2 = IntFor<2 * B + 1>;   // 2x2 minors, 2D lifts, orient2d
+  using Lift3 = IntFor<2 * B + 2>;    // 3D lifts
+  using Minor3 = IntFor<3 * B + 3>;   // 3x3 minors, orient3d
+  using InCircle = IntFor<4 * B + 4>;
+  using InSphere = IntFor<5 * B + 7>;
+  static_assert(value_bits<std::int64_t> >= B);  // index differences
+  static_assert(value_bits<Minor2> >= 2 * B + 1);
+  static_assert(value_bits<Lift3> >= 2 * B + 2);
+  static_assert(value_bits<Minor3> >= 3 * B + 3);
+  static_assert(value_bits<InCircle> >= 4 * B + 4);
+  static_assert(value_bits<InSphere> >= 5 * B + 7);
+};
+
+template <class T>
+T minor2(std::int64_t a0, std::int64_t a1, std::int64_t b0, std::int64_t b1) {
+  return mul_in<T>(a0, b1) - mul_in<T>(a1, b0);
+}
+
+template <int B>
+typename Budget<B>::Minor2 orient2d(const I2& a, const I2& b, const I2& c) {
+  using T = typename Budget<B>::Minor2;
+  return minor2<T>(a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]);
+}
+
+template <int B>
+typename Budget<B>::InCircle incircle(const I2& a, const I2& b, const I2& c, const I2& d) {
+  using T = typename Budget<B>::Minor2;
+  using W = typename Budget<B>::InCircle;
+  const std::int64_t adx = a[0] - d[0], ady = a[1] - d[1];
+  const std::int64_t bdx = b[0] - d[0], bdy = b[1] - d[1];
+  const std::int64_t cdx = c[0] - d[0], cdy = c[1] - d[1];
+  const T alift = mul_in<T>(adx, adx) + mul_in<T>(ady, ady);
+  const T blift = mul_in<T>(bdx, bdx) + mul_in<T>(bdy, bdy);
+  const T clift = mul_in<T>(cdx, cdx) + mul_in<T>(cdy, cdy);
+  const T bc = minor2<T>(bdx, bdy, cdx, cdy);
+  const T ca = minor2<T>(cdx, cdy, adx, ady);
+  const T ab = minor2<T>(adx, ady, bdx, bdy);
+  return mul_in<W>(alift, bc) + mul_in<W>(blift, ca) + mul_in<W>(clift, ab);
+}
+
+// 3x3 minor with rows (x0,y0,z0),(x1,..),(x2,..) expanded along z:
+// z0 M(1,2) - z1 M(0,2) + z2 M(0,1), written with the cyclic minors.
+template <int B>
+typename Budget<B>::Minor3 orient3d(const I3& a, const I3& b, const I3& c, const I3& d) {
+  using T = typename Budget<B>::Minor2;
+  using W = typename Budget<B>::Minor3;
+  const std::int64_t adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
+  const std::int64_t bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
+  const std::int64_t cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
+  const T bc = minor2<T>(bdx, bdy, cdx, cdy);
+  const T ca = minor2<T>(cdx, cdy, adx, ady);
+  const T ab = minor2<T>(adx, ady, bdx, bdy);
+  return mul_in<W>(adz, bc) + mul_in<W>(bdz, ca) + mul_in<W>(cdz, ab);
+}
+
+template <int B>
+typename Budget<B>::InSphere insphere(const I3& a, const I3& b, const I3& c, const I3& d,
+                                      const I3& e) {
+  using T = typename Budget<B>::Minor2;
+  using L = typename Budget<B>::Lift3;
+  using M = typename Budget<B>::Minor3;
+  using W = typename Budget<B>::InSphere;
+  std::int64_t x[4], y[4], z[4];
+  const I3* p[4] = {&a, &b, &c, &d};
+  for (int i = 0; i < 4; ++i) {
+    x[i] = (*p[i])[0] - e[0];
+    y[i] = (*p[i])[1] - e[1];
+    z[i] = (*p[i])[2] - e[2];
+  }
+  // 2x2 minors of the x,y columns: m[i][j] = x_i y_j - x_j y_i.
+  const T ab = minor2<T>(x[0], y[0], x[1], y[1]);
+  const T bc = minor2<T>(x[1], y[1], x[2], y[2]);
+  const T cd = minor2<T>(x[2], y[2], x[3], y[3]);
+  const T da = minor2<T>(x[3], y[3], x[0], y[0]);
+  const T ac = minor2<T>(x[0], y[0], x[2], y[2]);
+  const T bd = minor2<T>(x[1], y[1], x[3], y[3]);
+  // 3x3 minors of rows (i,j,k) over x,y,z: each a sum of three d*minor2 terms.
+  const M abc = mul_in<M>(z[0], bc) - mul_in<M>(z[1], ac) + mul_in<M>(z[2], ab);
+  const M bcd = mul_in<M>(z[1], cd) - mul_in<M>(z[2], bd) + mul_in<M>(z[3], bc);
+  const M cda = mul_in<M>(z[2], da) + mul_in<M>(z[3], ac) + mul_in<M>(z[0], cd);
+  const M dab = mul_in<M>(z[3], ab) + mul_in<M>(z[0], bd) + mul_in<M>(z[1], da);
+  L lift[4];
+  for (int i = 0; i < 4; ++i)
+    lift[i] = mul_in<L>(x[i], x[i]) + mul_in<L>(y[i], y[i]) + mul_in<L>(z[i], z[i]);
+  // Laplace expansion along the lifted column (as predicates/determinants.hpp).
+  return (mul_in<W>(lift[3], abc) - mul_in<W>(lift[2], dab)) +
+         (mul_in<W>(lift[1], cda) - mul_in<W>(lift[0], bcd));
+}
+
+template <class T>
+Sign sign(const T& v) {
+  return static_cast<Sign>(sign_int(v));
+}
+
+}  // namespace intdet
+
+template <int B2, int B3>
+class BasicIntegerKernel {
+ public:
+  static constexpr bool exact = true;
+  static constexpr std::string_view name = "integer";
+  static constexpr int bits2 = B2, bits3 = B3;
+
+  // Unit grids (h = 1) until fitted.
+  BasicIntegerKernel() : g2_(IntegerGrid<2>::unit(B2)), g3_(IntegerGrid<3>::unit(B3)) {}
+
+  // A kernel whose D-dimensional grid covers pts (the other one stays unit).
+  template <int D>
+  static BasicIntegerKernel fit(std::span<const Point<D>> pts) {
+    BasicIntegerKernel k;
+    if constexpr (D == 2) {
+      k.g2_ = IntegerGrid<2>::fit(pts, B2);
+      k.fitted2_ = true;
+    } else {
+      static_assert(D == 3);
+      k.g3_ = IntegerGrid<3>::fit(pts, B3);
+      k.fitted3_ = true;
+    }
+    return k;
+  }
+
+  const IntegerGrid<2>& grid2() const { return g2_; }
+  const IntegerGrid<3>& grid3() const { return g3_; }
+
+  Point2 snap(const Point2& p) const { return g2_.snap(p); }
+  Point3 snap(const Point3& p) const { return g3_.snap(p); }
+
+  // The SnappingKernel hook: snaps in place on this kernel's grid, fitting the
+  // grid to pts first if it was not fitted yet. Returns the statistics and
+  // keeps them in last_snap().
+  SnapStats snap_all(std::vector<Point2>& pts) {
+    if (!fitted2_) {
+      g2_ = IntegerGrid<2>::fit(pts, B2);
+      fitted2_ = true;
+    }
+    return last_ = g2_.snap_all(pts);
+  }
+  SnapStats snap_all(std::vector<Point3>& pts) {
+    if (!fitted3_) {
+      g3_ = IntegerGrid<3>::fit(pts, B3);
+      fitted3_ = true;
+    }
+    return last_ = g3_.snap_all(pts);
+  }
+  const SnapStats& last_snap() const { return last_; }
+
+  Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const {
+    return intdet::sign(intdet::orient2d<B2>(g2_.index(a), g2_.index(b), g2_.index(c)));
+  }
+  Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    return intdet::sign(
+        intdet::incircle<B2>(g2_.index(a), g2_.index(b), g2_.index(c), g2_.index(d)));
+  }
+  Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    return intdet::sign(
+        intdet::orient3d<B3>(g3_.index(a), g3_.index(b), g3_.index(c), g3_.index(d)));
+  }
+  Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                const Point3& e) const {
+    return intdet::sign(intdet::insphere<B3>(g3_.index(a), g3_.index(b), g3_.index(c),
+                                             g3_.index(d), g3_.index(e)));
+  }
+
+ private:
+  IntegerGrid<2> g2_;
+  IntegerGrid<3> g3_;
+  bool fitted2_ = false, fitted3_ = false;
+  SnapStats last_;
+};
+
+// The default: the finest grid the 320-bit budget allows (B = 62 in 2D and 3D).
+using IntegerKernel = BasicIntegerKernel<62, 62>;
+// Every predicate in __int128 (B = 30 in 2D, 24 in 3D).
+using IntegerKernel128 = BasicIntegerKernel<30, 24>;
+
+}  // namespace dlab

@@ -1,0 +1,296 @@
+// perturbed<K>: symbolic perturbation of the in-circle / in-sphere predicates,
+// in the form CGAL's Delaunay_triangulation_2/3 use (Devillers & Teillaud,
+// "Perturbations for Delaunay and weighted Delaunay 3D triangulations",
+// CGTA 44 (2011)), so that the triangulation is unique and equal to CGAL's.
+//
+// The perturbation. Only the lifted coordinate is perturbed: point p of
+// lexicographic rank r(p) (x, then y, then z; larger rank = larger point) is
+// lifted to |p|^2 + eps^(N - r(p)), 0 < eps infinitesimal. Orientation is never
+// perturbed. In-circle is the determinant with rows (p, |p|^2, 1); perturbing the
+// lift of one row adds eps^k times that row's cofactor, so the perturbed sign is
+// the first non-zero among: the exact sign, then the cofactors taken from the
+// lexicographically LARGEST point (dominant eps power) downwards. With Shewchuk's
+// conventions (predicates/kernel.hpp) the cofactor of row i is
+//   query d (resp. e):        -orient(a, b, c)        (-orient3d(a, b, c, d) in 3D)
+//   any other point X:         orient(...) of (a, b, c[, d]) with X replaced by the query.
+// For a, b, c counterclockwise this is CGAL's walk (DT2::side_of_oriented_circle
+// with perturb = true): "largest is the query -> outside; largest is c ->
+// orient2d(a,b,d); b -> orient2d(a,d,c); a -> orient2d(d,b,c)". In 3D, CGAL's
+// side_of_oriented_sphere is -insphere and its orientation is -orient3d, so
+// CGAL's "p3 -> orientation(p0,p1,p2,p)" becomes orient3d(a,b,c,e) here, etc.
+// The formula is a polynomial identity (each coefficient is a cofactor of one
+// determinant), so it needs no precondition on the orientation of a, b, c[, d]
+// and stays antisymmetric under permutations. (CGAL 5.5's 2D function answers
+// "outside" for the query even when a, b, c are clockwise, which its
+// triangulation never asks; on counterclockwise a, b, c the two agree.)
+// The coefficients are the orientations of all D+2 subsets of D+1 points, so
+// the answer is zero only if all the points lie on one line (plane): never for
+// non-collinear a, b, c (non-coplanar a, b, c, d). For distinct points the
+// walk decides within the first 2 points, as CGAL 5.5 asserts.
+//
+// coplanar_incircle(a, b, c, p): CGAL's coplanar_side_of_bounded_circle with
+// perturbation, used on the 3D convex hull: an UNORIENTED answer (positive = p
+// inside the circle through a, b, c), for p coplanar with non-collinear a, b, c.
+// Exact part: any sphere through a, b, c meets their plane in their circle, so
+// with s = a moved along a coordinate axis not parallel to the plane (s is a
+// double, off the plane), p is inside the circle iff it is inside sphere abcs:
+// sign = insphere(a, b, c, s, p) * orient3d(a, b, c, s). On zero, the 2D walk
+// in the plane (coplanar_orientation as the plane's orientation), normalised by
+// local = coplanar_orientation(a, b, c), over the three largest points; if
+// nothing decides (impossible for distinct points) -local, as CGAL 5.5 does.
+//
+// collinear_between(p, q, r): q strictly between p and r, for collinear points:
+// lexicographic order is monotone along a line, so p < q < r or r < q < p.
+//
+// K must be exact for the answers to mean anything (perturbing an inexact
+// zero is meaningless); perturbed<K> never changes a non-zero answer of K.
+#pragma once
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "predicates/kernel.hpp"
+#include "predicates/stages.hpp"
+
+namespace dlab {
+
+// Lexicographic comparison, exact (plain double comparisons).
+template <int D>
+constexpr bool lex_less(const Point<D>& a, const Point<D>& b) {
+  for (int i = 0; i < D; ++i) {
+    if (a[i] < b[i]) return true;
+    if (b[i] < a[i]) return false;
+  }
+  return false;
+}
+
+// Exact: q strictly between p and r, given that p, q, r are collinear.
+template <int D>
+constexpr bool collinear_between(const Point<D>& p, const Point<D>& q, const Point<D>& r) {
+  return (lex_less<D>(p, q) && lex_less<D>(q, r)) || (lex_less<D>(r, q) && lex_less<D>(q, p));
+}
+
+namespace sos {
+
+// Indices 0..N-1 of pts sorted by decreasing lexicographic order (stable).
+template <int D, std::size_t N>
+constexpr std::array<int, N> by_decreasing_rank(const std::array<const Point<D>*, N>& pts) {
+  std::array<int, N> idx{};
+  for (std::size_t i = 0; i < N; ++i) idx[i] = static_cast<int>(i);
+  for (std::size_t i = 1; i < N; ++i)  // insertion sort: N <= 5
+    for (std::size_t j = i; j > 0 && lex_less<D>(*pts[idx[j - 1]], *pts[idx[j]]); --j) {
+      const int t = idx[j];
+      idx[j] = idx[j - 1];
+      idx[j - 1] = t;
+    }
+  return idx;
+}
+
+// The perturbed sign of the lifted determinant of D+2 points (the last one is
+// the query) once its exact value is zero. `orient` takes D+1 point pointers.
+template <int D, class Orient>
+Sign walk(const std::array<const Point<D>*, D + 2>& pts, Orient&& orient) {
+  constexpr int query = D + 1;
+  const auto order = by_decreasing_rank<D, D + 2>(pts);
+  for (int i : order) {
+    std::array<const Point<D>*, D + 1> simplex{};
+    for (int j = 0; j <= D; ++j) simplex[j] = pts[j];
+    Sign s;
+    if (i == query) {
+      s = -orient(simplex);
+    } else {
+      simplex[i] = pts[query];
+      s = orient(simplex);
+    }
+    if (s != Sign::zero) return s;
+  }
+  return Sign::zero;  // only when the preconditions fail (all points collinear/coplanar)
+}
+
+}  // namespace sos
+
+template <class K>
+struct perturbed {
+  static constexpr bool exact = K::exact;
+  static constexpr bool symbolic = true;  // answers are those of the perturbed points
+  static constexpr std::string_view name = K::name;
+
+  // Stages: those of K (or K's name), then "perturbation" (the exact answer was
+  // zero and the symbolic walk decided).
+  static constexpr std::size_t perturbation_stage = stage_count<K>();
+  static constexpr std::array<std::string_view, stage_count<K>() + 1> stage_names = [] {
+    std::array<std::string_view, stage_count<K>() + 1> out{};
+    const auto base = stage_names_of<K>();
+    for (std::size_t i = 0; i < base.size(); ++i) out[i] = base[i];
+    out[base.size()] = "perturbation";
+    return out;
+  }();
+
+  K base;
+
+  perturbed() = default;
+  explicit perturbed(const K& k) : base(k) {}
+
+  // ---- 2D ----
+  Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const
+    requires Kernel2<K>
+  {
+    return base.orient2d(a, b, c);
+  }
+  Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const
+    requires Kernel2<K>
+  {
+    const Sign s = base.incircle(a, b, c, d);
+    return s != Sign::zero ? s : incircle_perturbation(a, b, c, d);
+  }
+  // The symbolic part alone (valid when the exact in-circle is zero).
+  Sign incircle_perturbation(const Point2& a, const Point2& b, const Point2& c,
+                             const Point2& d) const
+    requires Kernel2<K>
+  {
+    return sos::walk<2>({&a, &b, &c, &d}, [this](const std::array<const Point2*, 3>& t) {
+      return base.orient2d(*t[0], *t[1], *t[2]);
+    });
+  }
+
+  // ---- 3D ----
+  Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const
+    requires Kernel3<K>
+  {
+    return base.orient3d(a, b, c, d);
+  }
+  Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                const Point3& e) const
+    requires Kernel3<K>
+  {
+    const Sign s = base.insphere(a, b, c, d, e);
+    return s != Sign::zero ? s : insphere_perturbation(a, b, c, d, e);
+  }
+  Sign insphere_perturbation(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                             const Point3& e) const
+    requires Kernel3<K>
+  {
+    return sos::walk<3>({&a, &b, &c, &d, &e}, [this](const std::array<const Point3*, 4>& t) {
+      return base.orient3d(*t[0], *t[1], *t[2], *t[3]);
+    });
+  }
+
+  // Orientation of p, q, r inside their plane: the 2D orientation of the
+  // projection onto the first of the xy, yz, xz planes where it is not zero
+  // (CGAL's coplanar_orientation order). For points of one plane the first
+  // non-degenerate projection is the same for every non-collinear triple, so
+  // the answers are consistent within the plane. Zero iff p, q, r collinear.
+  Sign coplanar_orientation(const Point3& p, const Point3& q, const Point3& r) const
+    requires Kernel3<K> && Kernel2<K>
+  {
+    return coplanar_orientation_axis(p, q, r).first;
+  }
+
+  // Exact (unperturbed) unoriented in-circle for coplanar points: positive when
+  // p is inside the circle through a, b, c (a, b, c not collinear).
+  Sign coplanar_incircle_exact(const Point3& a, const Point3& b, const Point3& c,
+                               const Point3& p) const
+    requires Kernel3<K> && Kernel2<K>
+  {
+    const auto [o, axis] = coplanar_orientation_axis(a, b, c);
+    if (o == Sign::zero) return Sign::zero;  // a, b, c collinear: precondition violated
+    // The projection along `axis` is non-degenerate, so the plane's normal has a
+    // non-zero component on `axis` and s = a + t e_axis (t != 0) is off the plane.
+    const Point3 s = off_plane(a, b, c, p, axis);
+    return base.insphere(a, b, c, s, p) * base.orient3d(a, b, c, s);
+  }
+
+  // Perturbed unoriented in-circle (CGAL's coplanar_side_of_bounded_circle with
+  // perturb = true): never zero for p distinct from non-collinear a, b, c.
+  Sign coplanar_incircle(const Point3& a, const Point3& b, const Point3& c, const Point3& p) const
+    requires Kernel3<K> && Kernel2<K>
+  {
+    const Sign s = coplanar_incircle_exact(a, b, c, p);
+    if (s != Sign::zero) return s;
+    const Sign local = coplanar_orientation(a, b, c);
+    const std::array<const Point3*, 4> pts{&a, &b, &c, &p};
+    const auto order = sos::by_decreasing_rank<3, 4>(pts);
+    for (int k = 0; k < 3; ++k) {  // the three largest points, as CGAL
+      Sign o = Sign::zero;
+      switch (order[k]) {
+        case 3: return Sign::negative;  // p itself: outside
+        case 2: o = coplanar_orientation(a, b, p); break;
+        case 1: o = coplanar_orientation(a, p, c); break;
+        case 0: o = coplanar_orientation(p, b, c); break;
+      }
+      if (o != Sign::zero) return o * local;
+    }
+    return -local;  // unreachable for distinct points; CGAL 5.5's value
+  }
+
+  // Snapping kernels (integer) snap as K does; the perturbation then orders
+  // the snapped points.
+  template <class Points>
+  auto snap_all(Points& pts)
+    requires requires(K& k) { k.snap_all(pts); }
+  {
+    return base.snap_all(pts);
+  }
+
+  // ---- staged interface (for counted<>) ----
+  Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) const
+    requires Kernel2<K>
+  {
+    return dlab::orient2d_staged(base, a, b, c);
+  }
+  Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c,
+                         const Point2& d) const
+    requires Kernel2<K>
+  {
+    const Staged s = dlab::incircle_staged(base, a, b, c, d);
+    if (s.sign != Sign::zero) return s;
+    return {incircle_perturbation(a, b, c, d), static_cast<unsigned char>(perturbation_stage)};
+  }
+  Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c,
+                         const Point3& d) const
+    requires Kernel3<K>
+  {
+    return dlab::orient3d_staged(base, a, b, c, d);
+  }
+  Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                         const Point3& e) const
+    requires Kernel3<K>
+  {
+    const Staged s = dlab::insphere_staged(base, a, b, c, d, e);
+    if (s.sign != Sign::zero) return s;
+    return {insphere_perturbation(a, b, c, d, e), static_cast<unsigned char>(perturbation_stage)};
+  }
+
+ private:
+  // {orientation, axis dropped by the projection}: xy drops z (2), yz drops x (0),
+  // xz drops y (1).
+  std::pair<Sign, int> coplanar_orientation_axis(const Point3& p, const Point3& q,
+                                                 const Point3& r) const {
+    Sign o = base.orient2d({p[0], p[1]}, {q[0], q[1]}, {r[0], r[1]});
+    if (o != Sign::zero) return {o, 2};
+    o = base.orient2d({p[1], p[2]}, {q[1], q[2]}, {r[1], r[2]});
+    if (o != Sign::zero) return {o, 0};
+    return {base.orient2d({p[0], p[2]}, {q[0], q[2]}, {r[0], r[2]}), 1};
+  }
+
+  // a with coordinate `axis` replaced by a different finite double, preferably
+  // about as far as the points' spread (better conditioned for filters).
+  static Point3 off_plane(const Point3& a, const Point3& b, const Point3& c, const Point3& p,
+                          int axis) {
+    double w = 0;
+    for (const Point3* q : {&b, &c, &p})
+      for (int i = 0; i < 3; ++i) w = std::fmax(w, std::fabs((*q)[i] - a[i]));
+    const double x = a[axis];
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const double t : {x + w, x - w, std::nextafter(x, inf), std::nextafter(x, -inf)})
+      if (std::isfinite(t) && t != x) {
+        Point3 s = a;
+        s[axis] = t;
+        return s;
+      }
+    return a;  // unreachable for finite a: one of the nextafter values is finite
+  }
+};
+
+}  // namespace dlab

@@ -1,0 +1,299 @@
+// The INPUT / SIMPLICES readers and the number formats of the `dlab` command:
+// every bad-input path names the file, the line and the problem; hex and
+// decimal floats parse exactly (checked against glibc's strtod and printf
+// "%a", which are independent implementations); arbitrary bytes never crash.
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "cli/numbers.hpp"
+#include "cli/point_reader.hpp"
+#include "cli/point_writer.hpp"
+#include "cli/simplex_io.hpp"
+#include "cli/stats_json.hpp"
+
+using namespace dlab;
+using namespace dlab::io;
+
+namespace {
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+double parsed(const std::string& s) {
+  const ParsedDouble p = parse_double(s);
+  REQUIRE(p.status == ParseStatus::ok);
+  return p.value;
+}
+
+// The InputError message of parsing `text`, or "" if it parsed.
+std::string error_of(const std::string& text, bool node = false, const std::string& name = "in.txt") {
+  try {
+    parse_points(text, name, node);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+double random_double(rc::Gen<std::uint64_t> g = rc::gen::arbitrary<std::uint64_t>()) {
+  for (;;) {
+    const double x = std::bit_cast<double>(*g);
+    if (std::isfinite(x)) return x;
+  }
+}
+
+}  // namespace
+
+TEST_CASE("parse_double reads decimal and C99 hexadecimal floats exactly", "[io]") {
+  CHECK(parsed("0x1.8p-3") == 0.1875);
+  CHECK(parsed("0X1P4") == 16);
+  CHECK(parsed("-0x.8p1") == -1);
+  CHECK(parsed("+0x10") == 16);
+  CHECK(parsed("0x1.fffffffffffffp+1023") == std::numeric_limits<double>::max());
+  CHECK(parsed("0x0.0000000000001p-1022") == std::numeric_limits<double>::denorm_min());
+  CHECK(parsed("0x1p-1074") == std::numeric_limits<double>::denorm_min());
+  CHECK(parsed("1.5") == 1.5);
+  CHECK(parsed("+.5") == 0.5);
+  CHECK(parsed("7.") == 7);
+  CHECK(parsed("1e3") == 1000);
+  CHECK(parsed("-2.5E-1") == -0.25);
+  CHECK(parsed("0.1") == 0.1);
+  CHECK(parsed("4e-324") == std::numeric_limits<double>::denorm_min());
+  // Underflow gives the correctly rounded value, as strtod does.
+  CHECK(same_bits(parsed("1e-400"), 0.0));
+  CHECK(same_bits(parsed("-1e-400"), -0.0));
+  CHECK(same_bits(parsed("0x1p-1075"), 0.0));                      // tie, to even: 0
+  CHECK(parsed("0x1.8p-1074") == 2 * std::numeric_limits<double>::denorm_min());  // tie, to even
+  CHECK(same_bits(parsed("-0"), -0.0));
+}
+
+TEST_CASE("parse_double classifies what it rejects", "[io]") {
+  CHECK(parse_double("nan").status == ParseStatus::nan);
+  CHECK(parse_double("-NaN").status == ParseStatus::nan);
+  CHECK(parse_double("inf").status == ParseStatus::infinity);
+  CHECK(parse_double("-Infinity").status == ParseStatus::infinity);
+  CHECK(parse_double("1e400").status == ParseStatus::out_of_range);
+  CHECK(parse_double("-0x1p1024").status == ParseStatus::out_of_range);
+  for (const char* bad : {"", "+", "-", "--1", "+-1", "1.5.5", "1e", "1e+", "0x", "0xp1", "0x1p",
+                          "1.8p-3", "0x-1", "0x+1", "0xinf", "1_000", "0x1.8p-3x", ".", "e5",
+                          "1,5", "abc", "1 2", "0b101", "\x01", "1\xff"})
+    CHECK(parse_double(bad).status == ParseStatus::malformed);
+}
+
+TEST_CASE("parse_double agrees with glibc strtod on random decimal and hex strings", "[io]") {
+  rc::prop("decimal", [] {
+    const double x = random_double();
+    const int digits = *rc::gen::inRange(1, 25);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*e", digits, x);  // not necessarily the exact value
+    const ParsedDouble p = parse_double(buf);
+    const double ref = std::strtod(buf, nullptr);
+    if (std::isinf(ref)) {
+      RC_ASSERT(p.status == ParseStatus::out_of_range);
+    } else {
+      RC_ASSERT(p.status == ParseStatus::ok);
+      RC_ASSERT(same_bits(p.value, ref));
+    }
+  });
+  rc::prop("format_hex equals printf %a and reads back exactly", [] {
+    const double x = random_double();
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%a", x);
+    RC_ASSERT(format_hex(x) == std::string(buf));
+    RC_ASSERT(same_bits(parsed(format_hex(x)), x));
+    RC_ASSERT(same_bits(parsed(format_decimal(x)), x));
+  });
+}
+
+TEST_CASE("format_hex on the special cases", "[io]") {
+  CHECK(format_hex(0.0) == "0x0p+0");
+  CHECK(format_hex(-0.0) == "-0x0p+0");
+  CHECK(format_hex(0.1875) == "0x1.8p-3");
+  CHECK(format_hex(std::numeric_limits<double>::denorm_min()) == "0x0.0000000000001p-1022");
+  CHECK(format_hex(-std::numeric_limits<double>::max()) == "-0x1.fffffffffffffp+1023");
+}
+
+TEST_CASE("plain INPUT: blanks, commas, comments, blank lines, CRLF, hex", "[io]") {
+  const PointSet ps = parse_points("# header\n\n 1 2\n3,4  # trailing comment\r\n0x1.8p-3 , -5e-1,\n\t\n", "f", false);
+  REQUIRE(ps.dimension == 2);
+  REQUIRE(ps.p2.size() == 3);
+  CHECK(ps.p2[0] == Point2{1, 2});
+  CHECK(ps.p2[1] == Point2{3, 4});
+  CHECK(ps.p2[2] == Point2{0.1875, -0.5});
+  const PointSet p3 = parse_points("1 2 3\n4 5 6", "f", false);  // no final newline
+  REQUIRE(p3.dimension == 3);
+  REQUIRE(p3.p3.size() == 2);
+  CHECK(p3.p3[1] == Point3{4, 5, 6});
+}
+
+TEST_CASE("plain INPUT errors name the file, the line and the problem", "[io]") {
+  CHECK_THAT(error_of("1 2\n3 4\nnan 5\n"), Catch::Contains("in.txt:3: NaN coordinate 'nan'"));
+  CHECK_THAT(error_of("1 2\n-inf 5\n"), Catch::Contains("in.txt:2: infinite coordinate '-inf'"));
+  CHECK_THAT(error_of("1 2\n1e999 5\n"), Catch::Contains("in.txt:2: coordinate '1e999' overflows"));
+  CHECK_THAT(error_of("1 2\n\n# c\n3 4 5\n"),
+             Catch::Contains("in.txt:4: wrong number of coordinates: expected 2 (as on line 1), found 3"));
+  CHECK_THAT(error_of("1 2 3\n4 5\n"), Catch::Contains("in.txt:2: wrong number of coordinates: expected 3"));
+  CHECK_THAT(error_of("# only a comment\n1 2 3 4\n"),
+             Catch::Contains("in.txt:2: expected 2 or 3 coordinates per point, found 4"));
+  CHECK_THAT(error_of("7\n"), Catch::Contains("in.txt:1: expected 2 or 3 coordinates per point, found 1"));
+  CHECK_THAT(error_of("1 2\n3 x4\n"), Catch::Contains("in.txt:2: unparsable number 'x4'"));
+  CHECK_THAT(error_of("1 2\n3 4\x01\n"), Catch::Contains("in.txt:2: unparsable number '4\\x01'"));
+  CHECK_THAT(error_of(""), Catch::Contains("in.txt:1: empty input"));
+  CHECK_THAT(error_of("# nothing\n\n   \n"), Catch::Contains("in.txt:3: empty input"));
+}
+
+TEST_CASE("unreadable files are reported with their name", "[io]") {
+  try {
+    read_points("/nonexistent/dir/points.txt");
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::StartsWith("/nonexistent/dir/points.txt: cannot read"));
+  }
+  CHECK_THROWS_WITH(read_points("/"), Catch::StartsWith("/: cannot read: is a directory"));
+  CHECK_THROWS_WITH(read_file("/"), Catch::StartsWith("/: cannot read: is a directory"));
+}
+
+TEST_CASE(".node files (Triangle / TetGen)", "[io]") {
+  CHECK(is_node_file("a/b.node"));
+  CHECK(is_node_file("B.NODE"));
+  CHECK_FALSE(is_node_file("b.nodes"));
+  // Indices from 1, one attribute, boundary markers, comments.
+  const PointSet a = parse_points("# Triangle\n4 2 1 1\n1 0 0 9.5 1\n2 1 0 9.5 0\n3 1 1 9.5 -1 # c\n4 0x1p-1 1 0 1\n",
+                                  "sq.node", true);
+  REQUIRE(a.dimension == 2);
+  REQUIRE(a.p2.size() == 4);
+  CHECK(a.p2[3] == Point2{0.5, 1});
+  // Indices from 0, 3D (TetGen), no attributes or markers.
+  const PointSet b = parse_points("2 3 0 0\n0 1 2 3\n1 4 5 6\n", "t.node", true);
+  REQUIRE(b.dimension == 3);
+  REQUIRE(b.p3.size() == 2);
+  CHECK(b.p3[1] == Point3{4, 5, 6});
+
+  const auto err = [](const std::string& t) { return error_of(t, true, "m.node"); };
+  CHECK_THAT(err("3 2 0 0\n0 0 0\n1 1 0\n"), Catch::Contains("m.node:3: .node count mismatch: the header (line 1) declares 3 points, found 2"));
+  CHECK_THAT(err("1 2 0 0\n0 0 0\n1 1 0\n"), Catch::Contains("m.node:3: .node count mismatch"));
+  CHECK_THAT(err("2 4 0 0\n"), Catch::Contains("m.node:1: dimension must be 2 or 3, found 4"));
+  CHECK_THAT(err("2 2 0\n"), Catch::Contains("m.node:1: bad .node header"));
+  CHECK_THAT(err("x 2 0 0\n"), Catch::Contains("m.node:1: bad .node header: #points"));
+  CHECK_THAT(err("2 2 0 2\n"), Catch::Contains("m.node:1: bad .node header: #boundary markers"));
+  CHECK_THAT(err("0 2 0 0\n"), Catch::Contains("m.node:1: empty input"));
+  CHECK_THAT(err("# nothing\n"), Catch::Contains("m.node:1: empty input"));
+  CHECK_THAT(err("2 2 0 0\n0 0 0\n2 1 1\n"), Catch::Contains("m.node:3: point index 2 out of sequence: expected 1"));
+  CHECK_THAT(err("2 2 0 0\n5 0 0\n6 1 1\n"), Catch::Contains("m.node:2: the first point index must be 0 or 1"));
+  CHECK_THAT(err("2 2 1 0\n0 0 0\n1 1 1\n"), Catch::Contains("m.node:2: wrong number of fields: expected 4"));
+  CHECK_THAT(err("1 2 0 0\n0 nan 0\n"), Catch::Contains("m.node:2: NaN coordinate"));
+  CHECK_THAT(err("1 2 0 1\n0 1 0 x\n"), Catch::Contains("m.node:2: bad boundary marker 'x'"));
+  CHECK_THAT(err("1 2 1 0\n0 1 0 zz\n"), Catch::Contains("m.node:2: attribute: unparsable number 'zz'"));
+}
+
+TEST_CASE("arbitrary bytes are parsed or rejected with an InputError, never worse", "[io]") {
+  rc::prop("plain and .node", [](const std::string& bytes, bool node) {
+    try {
+      const PointSet ps = parse_points(bytes, "fuzz", node);
+      RC_ASSERT(ps.size() > 0);
+      RC_ASSERT((ps.dimension == 2 || ps.dimension == 3));
+      for (const auto& p : ps.p2) RC_ASSERT((std::isfinite(p[0]) && std::isfinite(p[1])));
+      for (const auto& p : ps.p3)
+        RC_ASSERT((std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])));
+    } catch (const InputError& e) {
+      RC_ASSERT(std::string(e.what()).rfind("fuzz:", 0) == 0);
+    }
+  });
+  rc::prop("number-like lines", [] {
+    const auto tok = rc::gen::element<std::string>("1", "-0x1.8p3", "nan", "1e999", ",", " ", "#", "\n",
+                                                   "0x", "2.5e-3", "\r", "inf", "+", ".", "e");
+    const auto parts = *rc::gen::container<std::vector<std::string>>(tok);
+    std::string text;
+    for (const auto& p : parts) text += p;
+    try {
+      (void)parse_points(text, "fuzz", false);
+    } catch (const InputError&) {
+    }
+  });
+}
+
+TEST_CASE("points written as hex or decimal read back bit for bit", "[io]") {
+  rc::prop("round trip", [](bool hex) {
+    PointSet ps;
+    ps.dimension = *rc::gen::element(2, 3);
+    const int n = *rc::gen::inRange(1, 20);
+    for (int i = 0; i < n; ++i) {
+      if (ps.dimension == 2) ps.p2.push_back({random_double(), random_double()});
+      else ps.p3.push_back({random_double(), random_double(), random_double()});
+    }
+    std::ostringstream out;
+    write_points(out, ps, hex ? FloatFormat::hex : FloatFormat::decimal);
+    const PointSet back = parse_points(out.str(), "rt", false);
+    RC_ASSERT(back.dimension == ps.dimension);
+    RC_ASSERT(back.size() == ps.size());
+    for (std::size_t i = 0; i < ps.p2.size(); ++i)
+      for (int j = 0; j < 2; ++j) RC_ASSERT(same_bits(back.p2[i][j], ps.p2[i][j]));
+    for (std::size_t i = 0; i < ps.p3.size(); ++i)
+      for (int j = 0; j < 3; ++j) RC_ASSERT(same_bits(back.p3[i][j], ps.p3[i][j]));
+  });
+}
+
+TEST_CASE("SIMPLICES reader and writer", "[io]") {
+  const std::vector<std::uint32_t> s{0, 1, 2, 2, 3, 0};
+  std::ostringstream out;
+  write_simplices(out, s, 2);
+  CHECK(out.str() == "0 1 2\n2 3 0\n");
+  CHECK(parse_simplices(out.str(), "t", 2, 4) == s);
+  CHECK(parse_simplices("# none\n\n", "t", 3, 4).empty());
+  CHECK(parse_simplices("0 1 2 3\n", "t", 3, 4) == std::vector<std::uint32_t>{0, 1, 2, 3});
+  const auto err = [](const std::string& text, int dim, std::size_t n) -> std::string {
+    try {
+      parse_simplices(text, "s.txt", dim, n);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK_THAT(err("0 1 2\n0 1 4\n", 2, 4), Catch::Contains("s.txt:2: vertex index 4 out of range (4 points)"));
+  CHECK_THAT(err("0 1\n", 2, 4), Catch::Contains("s.txt:1: expected 3 vertex indices per simplex, found 2"));
+  CHECK_THAT(err("0 1 2 3\n", 2, 4), Catch::Contains("s.txt:1: expected 3 vertex indices per simplex, found 4"));
+  CHECK_THAT(err("\n0 -1 2\n", 2, 4), Catch::Contains("s.txt:2: bad vertex index '-1'"));
+  CHECK_THAT(err("0 1 2.0\n", 2, 4), Catch::Contains("s.txt:1: bad vertex index '2.0'"));
+  CHECK_THAT(err("0 1 99999999999999999999999\n", 2, 4), Catch::Contains("s.txt:1: bad vertex index"));
+}
+
+TEST_CASE("--stats JSON has the contract's keys in order and escapes strings", "[io]") {
+  RunResult res;
+  res.dimension = 2;
+  res.simplices = {0, 1, 2};
+  res.distinct_points = 3;
+  res.predicates = {{"orient2d", 5}};
+  res.counters = {{"walk_steps", 7}, {"flips", 0}};
+  StatsRecord rec;
+  rec.input_points = 4;
+  rec.result = &res;
+  rec.outcome = "ok";
+  rec.message = "quote \" backslash \\ newline \n bell \x07";
+  std::ostringstream out;
+  write_stats_json(out, rec);
+  const std::string j = out.str();
+  std::size_t at = 0;
+  for (const char* key : {"\"algorithm\": \"bowyer-watson\"", "\"kernel\": \"adaptive\"", "\"policy\": \"sos\"",
+                          "\"order\": \"brio\"", "\"seed\": 0", "\"dimension\": 2", "\"input_points\": 4",
+                          "\"distinct_points\": 3", "\"simplices\": 1", "\"seconds\": 0",
+                          "\"peak_rss_bytes\": 0", "\"predicates\": {", "\"orient2d\": 5",
+                          "\"counters\": {", "\"walk_steps\": 7", "\"flips\": 0", "\"snapping\": {}",
+                          "\"outcome\": \"ok\"",
+                          "\"message\": \"quote \\\" backslash \\\\ newline \\n bell \\u0007\""}) {
+    const std::size_t p = j.find(key, at);
+    INFO(key);
+    REQUIRE(p != std::string::npos);
+    at = p;
+  }
+  CHECK(j.front() == '{');
+  CHECK(j.substr(j.size() - 2) == "}\n");
+  CHECK(peak_rss_bytes() > 0);
+}

@@ -1,0 +1,13 @@
+// Bowyer–Watson x `float` kernel: one translation unit per algorithm x kernel
+// (explicit instantiation keeps builds parallel and error messages short).
+#include "algorithms/bowyer_watson.hpp"
+#include "predicates/float_kernel.hpp"
+#include "variants/driver.hpp"
+
+namespace dlab {
+
+RunResult run_bowyer_watson_float(const PointSet& points, const RunOptions& options) {
+  return run_algorithm<BowyerWatson, FloatKernel>(points, options);
+}
+
+}  // namespace dlab

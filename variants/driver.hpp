@@ -1,0 +1,125 @@
+// The driver shared by every algorithm x kernel instantiation: snap (integer
+// kernel), choose the degeneracy policy, compute the insertion order, reorder
+// the points physically (id = insertion position; design.md section 7 item 7),
+// run the algorithm, and map its ids back to input indices, duplicates to their
+// first occurrence.
+//
+// An algorithm is a class template Algo<K, D> constructible from a K, with
+//   TriangulationResult run(std::span<const Point<D>> points_in_order);
+//   const K& kernel() const;   (the driver reads the predicate counters there)
+// (algorithms/triangulation_result.hpp).
+//
+// Policy: `sos` wraps the kernel in perturbed<K> (predicates/perturbed.hpp),
+// `strict` uses K alone.  For the inexact kernels (float, epsilon) `sos` also
+// applies perturbed<K>: the perturbation then only acts where K answers an
+// exact zero, which keeps the two policies meaningful and comparable; no
+// guarantee is claimed either way.
+#pragma once
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "algorithms/triangulation_result.hpp"
+#include "predicates/counted.hpp"
+#include "predicates/kernel.hpp"
+#include "predicates/perturbed.hpp"
+#include "variants/insertion_order.hpp"
+#include "variants/run.hpp"
+
+
+namespace dlab {
+
+namespace driver_detail {
+
+template <int D>
+std::vector<Point<D>>& points_of(PointSet& ps) {
+  if constexpr (D == 2)
+    return ps.p2;
+  else
+    return ps.p3;
+}
+
+template <int D>
+std::size_t count_distinct(std::vector<Point<D>> pts) {
+  std::sort(pts.begin(), pts.end());
+  return static_cast<std::size_t>(std::unique(pts.begin(), pts.end()) - pts.begin());
+}
+
+template <template <class, int> class Algo, class K, int D>
+void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& o, RunResult& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<std::uint32_t> order =
+      insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed);
+  std::vector<Point<D>> seq(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) seq[i] = pts[order[i]];
+
+  Algo<K, D> algo(k);
+  TriangulationResult t = algo.run(std::span<const Point<D>>(seq));
+
+  r.outcome = t.outcome;
+  r.message = std::move(t.message);
+  r.counters = std::move(t.counters);
+  if (t.outcome != RunResult::Outcome::lower_dimensional) {
+    // First occurrence: the smallest input index among the points merged into a vertex.
+    std::vector<std::uint32_t> rep(pts.size(), kNotProcessed);
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < t.merged_into.size(); ++i) {
+      const std::uint32_t v = t.merged_into[i];
+      if (v == kNotProcessed || v >= rep.size()) continue;
+      if (v == i) ++distinct;
+      rep[v] = std::min(rep[v], order[i]);
+    }
+    r.distinct_points = distinct;
+    r.simplices = std::move(t.simplices);
+    for (std::uint32_t& v : r.simplices) v = rep[v];
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (t.outcome == RunResult::Outcome::lower_dimensional) r.distinct_points = count_distinct<D>(pts);
+
+  r.predicates = algo.kernel().counters();
+}
+
+template <template <class, int> class Algo, class K, int D>
+RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o, bool sos) {
+  RunResult r;
+  r.dimension = D;
+  r.points.dimension = D;
+  std::vector<Point<D>>& pts = points_of<D>(r.points);
+  pts = input;
+  K base{};
+  if constexpr (SnappingKernel<K, D>) {
+    const auto st = base.snap_all(pts);
+    r.snapping = {{"points_moved", st.moved}, {"points_merged", st.merged}};
+    r.max_snap_displacement = st.max_displacement;
+  }
+  // Predicate calls are always counted (design.md section 5, --stats).
+  if (sos)
+    run_kernel<Algo, counted<perturbed<K>>, D>(counted<perturbed<K>>(perturbed<K>(base)), pts, o, r);
+  else
+    run_kernel<Algo, counted<K>, D>(counted<K>(base), pts, o, r);
+  return r;
+}
+
+}  // namespace driver_detail
+
+// Entry point of one algorithm x kernel translation unit.
+template <template <class, int> class Algo, class K>
+RunResult run_algorithm(const PointSet& ps, const RunOptions& o) {
+  bool sos;
+  if (o.policy == "sos")
+    sos = true;
+  else if (o.policy == "strict")
+    sos = false;
+  else
+    throw UsageError("unknown policy '" + o.policy + "' (expected sos or strict)");
+  parse_insertion_order(o.order);  // throws on an unknown name
+  if (ps.dimension == 2) return driver_detail::run_dimension<Algo, K, 2>(ps.p2, o, sos);
+  if (ps.dimension == 3) return driver_detail::run_dimension<Algo, K, 3>(ps.p3, o, sos);
+  throw UsageError("dimension must be 2 or 3, not " + std::to_string(ps.dimension));
+}
+
+}  // namespace dlab

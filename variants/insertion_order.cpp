@@ -1,0 +1,182 @@
+// Insertion orders; see insertion_order.hpp for the sources.
+#include "variants/insertion_order.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "variants/run.hpp"
+
+namespace dlab {
+
+InsertionOrder parse_insertion_order(std::string_view name) {
+  if (name == "input") return InsertionOrder::input;
+  if (name == "random") return InsertionOrder::random;
+  if (name == "brio") return InsertionOrder::brio;
+  if (name == "hilbert") return InsertionOrder::hilbert;
+  throw UsageError("unknown insertion order '" + std::string(name) +
+                   "' (expected input, random, brio or hilbert)");
+}
+
+// Skilling 2004: convert axes to the "transposed" Hilbert index in place
+// (undo the excess rotations/reflections from the top bit down, then Gray
+// encode), and read the index off bit-plane by bit-plane.
+std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
+  const std::uint32_t top = std::uint32_t(1) << (bits - 1);
+  for (std::uint32_t q = top; q > 1; q >>= 1) {
+    const std::uint32_t low = q - 1;
+    for (int i = 0; i < n; ++i) {
+      // Branch-free form of: if (x[i] & q) reflect (x[0] ^= low); else
+      // exchange the low bits of x[0] and x[i].  (The branch is a coin flip on
+      // real data: mispredictions dominated the cost.)
+      const std::uint32_t set = 0u - ((x[i] & q) != 0);
+      const std::uint32_t t = (x[0] ^ x[i]) & low & ~set;
+      x[0] ^= (low & set) ^ t;
+      x[i] ^= t;
+    }
+  }
+  for (int i = 1; i < n; ++i) x[i] ^= x[i - 1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = top; q > 1; q >>= 1) t ^= (q - 1) & (0u - ((x[n - 1] & q) != 0));
+  for (int i = 0; i < n; ++i) x[i] ^= t;
+  std::uint64_t key = 0;
+  for (int b = bits - 1; b >= 0; --b)
+    for (int i = 0; i < n; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
+  return key;
+}
+
+namespace {
+
+struct SplitMix64 {
+  std::uint64_t s;
+  std::uint64_t next() {
+    std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+};
+
+void shuffle(std::vector<std::uint32_t>& v, std::uint64_t seed) {
+  SplitMix64 g{seed};
+  for (std::size_t i = v.size(); i > 1; --i) {
+    const std::size_t j = static_cast<std::size_t>(g.next() % i);
+    std::swap(v[i - 1], v[j]);
+  }
+}
+
+// Hilbert keys over the bounding cube of the points (one scale for every axis,
+// so the curve keeps distances; halves avoid overflow of max - min).
+template <int D>
+std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts) {
+  // Cells per axis: about 16 per point along each axis (2^(log2(n)/D + 4)),
+  // at most 2^24 (2D) / 2^18 (3D).  The key's cost is linear in the bits.
+  constexpr int max_bits = D == 2 ? 24 : 18;
+  int bits = 4;
+  while (bits < max_bits && (std::uint64_t(1) << (D * (bits - 4))) < pts.size()) ++bits;
+  std::vector<std::uint64_t> keys(pts.size());
+  if (pts.empty()) return keys;
+  Point<D> lo = pts[0], hi = pts[0];
+  for (const auto& p : pts)
+    for (int a = 0; a < D; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  double extent = 0;
+  for (int a = 0; a < D; ++a) extent = std::max(extent, hi[a] * 0.5 - lo[a] * 0.5);
+  const double cells = double((std::uint64_t(1) << bits) - 1);
+  const double scale = extent > 0 && std::isfinite(extent) ? cells / extent : 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::uint32_t x[D];
+    for (int a = 0; a < D; ++a) {
+      double t = (pts[i][a] * 0.5 - lo[a] * 0.5) * scale;
+      if (!(t >= 0)) t = 0;  // NaN-safe
+      if (t > cells) t = cells;
+      x[a] = static_cast<std::uint32_t>(t);
+    }
+    keys[i] = hilbert_key(x, D, bits);
+  }
+  return keys;
+}
+
+// Stable LSD radix sort of idx[first, last) by keys[idx], 11-bit digits,
+// skipping digits on which all keys agree.
+void sort_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t last,
+                 const std::vector<std::uint64_t>& keys) {
+  const std::size_t n = last - first;
+  if (n < 2) return;
+  if (n < 256) {
+    std::stable_sort(idx.begin() + first, idx.begin() + last,
+                     [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+    return;
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> a(n), b(n);
+  std::uint64_t all_or = 0, all_and = ~std::uint64_t(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = {keys[idx[first + i]], idx[first + i]};
+    all_or |= a[i].first;
+    all_and &= a[i].first;
+  }
+  const std::uint64_t varying = all_or ^ all_and;
+  constexpr int digit = 11;  // 2048 buckets: the counters and write heads stay in L1
+  constexpr std::uint64_t dmask = (1u << digit) - 1;
+  std::vector<std::size_t> count(std::size_t(1) << digit);
+  for (int shift = 0; shift < 64; shift += digit) {
+    if (((varying >> shift) & dmask) == 0) continue;
+    std::fill(count.begin(), count.end(), 0);
+    for (const auto& e : a) ++count[(e.first >> shift) & dmask];
+    std::size_t sum = 0;
+    for (auto& c : count) {
+      const std::size_t t = c;
+      c = sum;
+      sum += t;
+    }
+    for (const auto& e : a) b[count[(e.first >> shift) & dmask]++] = e;
+    a.swap(b);
+  }
+  for (std::size_t i = 0; i < n; ++i) idx[first + i] = a[i].second;
+}
+
+template <int D>
+std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOrder order,
+                                      std::uint64_t seed) {
+  std::vector<std::uint32_t> idx(pts.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<std::uint32_t>(i);
+  switch (order) {
+    case InsertionOrder::input:
+      break;
+    case InsertionOrder::random:
+      shuffle(idx, seed);
+      break;
+    case InsertionOrder::hilbert:
+      sort_by_key(idx, 0, idx.size(), hilbert_keys<D>(pts));
+      break;
+    case InsertionOrder::brio: {
+      shuffle(idx, seed);
+      const auto keys = hilbert_keys<D>(pts);
+      // Rounds [0, b_k), [b_k, b_{k-1}), ..., [b_1, n) with b_{j+1} = b_j / 8.
+      std::size_t end = idx.size();
+      while (end > 0) {
+        const std::size_t begin = end >= 64 ? end / 8 : 0;
+        sort_by_key(idx, begin, end, keys);
+        end = begin;
+      }
+      break;
+    }
+  }
+  return idx;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> insertion_order(std::span<const Point2> pts, InsertionOrder order,
+                                           std::uint64_t seed) {
+  return order_impl<2>(pts, order, seed);
+}
+std::vector<std::uint32_t> insertion_order(std::span<const Point3> pts, InsertionOrder order,
+                                           std::uint64_t seed) {
+  return order_impl<3>(pts, order, seed);
+}
+
+}  // namespace dlab

@@ -1,0 +1,40 @@
+// Insertion orders: input, random (seeded shuffle), BRIO, Hilbert.
+//
+//  - hilbert: points sorted along a Hilbert curve over the bounding cube
+//    (about 16 cells per point along each axis, at most 2^24 (2D) / 2^18 (3D); key by Skilling's transpose
+//    algorithm, "Programming the Hilbert curve", AIP Conf. Proc. 707 (2004)),
+//    ties by input index.
+//  - brio: biased randomized insertion order (Amenta, Choi, Rote, "Incremental
+//    constructions con BRIO", SoCG 2003): shuffle, then split into rounds whose
+//    sizes grow by a factor 8 (the first 1/8 recursively, the last 7/8 as the
+//    final round; design.md section 7 item 7), each round sorted along the
+//    Hilbert curve.
+//  - random: a seeded Fisher–Yates shuffle.
+// Deterministic on every machine: splitmix64 (Steele, Lea, Flood 2014) drives
+// the shuffle, keys come from IEEE double arithmetic without contraction, and
+// sorting breaks ties by index.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "predicates/point.hpp"
+
+namespace dlab {
+
+enum class InsertionOrder { input, random, brio, hilbert };
+
+// Throws UsageError (variants/run.hpp) for an unknown name.
+InsertionOrder parse_insertion_order(std::string_view name);
+
+// A permutation of 0..n-1: position i holds the input index inserted i-th.
+std::vector<std::uint32_t> insertion_order(std::span<const Point2> pts, InsertionOrder order,
+                                           std::uint64_t seed);
+std::vector<std::uint32_t> insertion_order(std::span<const Point3> pts, InsertionOrder order,
+                                           std::uint64_t seed);
+
+// Hilbert index of grid coordinates x[0..n-1] (each < 2^bits), n * bits <= 64.
+std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits);
+
+}  // namespace dlab

@@ -1,0 +1,73 @@
+// The registry: algorithm x kernel names -> the translation unit that runs
+// them (variants/bw_<kernel>.cpp, ...).  Other algorithms add rows here.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "variants/run.hpp"
+
+namespace dlab {
+
+RunResult run_bowyer_watson_adaptive(const PointSet&, const RunOptions&);
+RunResult run_bowyer_watson_float(const PointSet&, const RunOptions&);
+RunResult run_bowyer_watson_mp(const PointSet&, const RunOptions&);
+RunResult run_bowyer_watson_epsilon(const PointSet&, const RunOptions&);
+RunResult run_bowyer_watson_integer(const PointSet&, const RunOptions&);
+
+namespace {
+
+struct Entry {
+  const char* algorithm;
+  const char* kernel;
+  RunResult (*run)(const PointSet&, const RunOptions&);
+};
+
+const Entry kEntries[] = {
+    {"bowyer-watson", "adaptive", &run_bowyer_watson_adaptive},
+    {"bowyer-watson", "integer", &run_bowyer_watson_integer},
+    {"bowyer-watson", "mp", &run_bowyer_watson_mp},
+    {"bowyer-watson", "float", &run_bowyer_watson_float},
+    {"bowyer-watson", "epsilon", &run_bowyer_watson_epsilon},
+};
+
+const char* const kKernels[] = {"adaptive", "integer", "mp", "float", "epsilon"};
+const char* const kAlgorithms[] = {"bowyer-watson", "lawson", "tanemura", "george"};
+
+template <int D>
+void check_points(const std::vector<Point<D>>& pts) {
+  if (pts.size() >= std::numeric_limits<std::uint32_t>::max() - 1)
+    throw UsageError("too many points (" + std::to_string(pts.size()) + "): at most 2^32 - 2");
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (double c : pts[i])
+      if (!std::isfinite(c))
+        throw UsageError("point " + std::to_string(i) + " has a non-finite coordinate");
+}
+
+}  // namespace
+
+std::vector<std::string> algorithm_names() { return {std::begin(kAlgorithms), std::end(kAlgorithms)}; }
+std::vector<std::string> kernel_names() { return {std::begin(kKernels), std::end(kKernels)}; }
+
+RunResult run(const PointSet& points, const RunOptions& options) {
+  const auto algos = algorithm_names();
+  const auto kernels = kernel_names();
+  if (std::find(algos.begin(), algos.end(), options.algorithm) == algos.end())
+    throw UsageError("unknown algorithm '" + options.algorithm +
+                     "' (expected bowyer-watson, lawson, tanemura or george)");
+  if (std::find(kernels.begin(), kernels.end(), options.kernel) == kernels.end())
+    throw UsageError("unknown kernel '" + options.kernel +
+                     "' (expected adaptive, integer, mp, float or epsilon)");
+  if (points.dimension == 2)
+    check_points<2>(points.p2);
+  else if (points.dimension == 3)
+    check_points<3>(points.p3);
+  else
+    throw UsageError("dimension must be 2 or 3, not " + std::to_string(points.dimension));
+  for (const Entry& e : kEntries)
+    if (options.algorithm == e.algorithm && options.kernel == e.kernel) return e.run(points, options);
+  throw UsageError("algorithm '" + options.algorithm + "' is not available with kernel '" +
+                   options.kernel + "' yet");
+}
+
+}  // namespace dlab
