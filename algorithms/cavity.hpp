@@ -48,10 +48,13 @@ class Restar {
 
  public:
   // Replaces the cavity by the star of p.  Returns the id of a new simplex
-  // (a finite one if there is any), or sets `error` (and leaves the mesh possibly inconsistent) when
-  // the boundary is not a closed manifold.
+  // (a finite one if there is any), or sets `error` (and leaves the mesh
+  // possibly inconsistent) when the boundary is not a closed manifold.
+  // `verify` re-checks that every new adjacency is mutual (for inexact
+  // kernels, whose cavities can be anything).
   std::uint32_t star(Mesh<D>& m, const std::vector<std::uint32_t>& cavity,
-                     const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+                     const std::vector<BoundaryRecord<D>>& records, std::string& error,
+                     bool verify = false) {
     // New simplices: cavity slots first, then fresh ones; link across the boundary.
     ids_.resize(records.size());
     std::uint32_t first = kNoNeighbour;
@@ -68,14 +71,32 @@ class Restar {
       if (first == kNoNeighbour || (m.is_ghost(first) && rec.v[D] != kGhost)) first = s;
       m.link(Mesh<D>::encode(s, rec.slot), rec.outside);
     }
-    const bool ok = (D == 2 && records.size() <= 32) ? link_cycle(m, records, error)
-                                                     : link_hashed(m, records, error);
+    bool ok;
+    if constexpr (D == 2)
+      ok = records.size() <= 32 ? link_cycle(m, records, error) : link_hashed(m, records, error);
+    else
+      ok = link_local(m, records, error) || (error.empty() && link_hashed(m, records, error));
     if (!ok) return kNoNeighbour;
+    if (verify) {  // inexact kernels: every new link must be mutual
+      for (std::size_t r = 0; r < records.size(); ++r)
+        for (int f = 0; f < V; ++f) {
+          const std::uint32_t enc = Mesh<D>::encode(ids_[r], f);
+          const std::uint32_t n = m.neighbour_enc(enc);
+          if (Mesh<D>::simplex_of(n) >= m.slots() || m.neighbour_enc(n) != enc) {
+            error = "cavity boundary is not a manifold (adjacency not mutual)";
+            return kNoNeighbour;
+          }
+        }
+    }
     for (std::size_t r = records.size(); r < cavity.size(); ++r) m.destroy(cavity[r]);
     return first;
   }
 
   std::size_t bytes_reserved() const { return table_.capacity() * sizeof(Entry); }
+
+  // The simplices created by the last successful star(), one per boundary
+  // record, in record order (George's method stores a circumsphere for each).
+  const std::vector<std::uint32_t>& created() const { return ids_; }
 
  private:
   // 2D, small cavities: the boundary is one cycle.  New triangle r is
@@ -115,6 +136,109 @@ class Restar {
       m.link(Mesh<D>::encode(ids_[r], (slot + 1) % 3),
              Mesh<D>::encode(ids_[next], (records[next].slot + 2) % 3));
     }
+    return true;
+  }
+
+
+  // kEdge[slot][f]: the slots of (a, b) in the oriented facet opposite f,
+  // rotated to start at p = slot `slot` (see link_local).
+  static constexpr std::array<std::array<std::array<int, 2>, 4>, 4> kEdge = [] {
+    std::array<std::array<std::array<int, 2>, 4>, 4> t{};
+    for (int slot = 0; slot < 4; ++slot)
+      for (int f = 0; f < 4; ++f) {
+        if (f == slot) continue;
+        int x[3];
+        int n = 0;
+        for (int i = 0; i < 4; ++i)
+          if (i != f) x[n++] = i;
+        if (f & 1) {
+          const int tmp = x[1];
+          x[1] = x[2];
+          x[2] = tmp;
+        }
+        const int ip = x[0] == slot ? 0 : (x[1] == slot ? 1 : 2);
+        t[slot][f] = {x[(ip + 1) % 3], x[(ip + 2) % 3]};
+      }
+    return t;
+  }();
+
+  // 3D (HXT's scheme, Marot et al. 2019, re-derived): boundary vertices get
+  // local ids (<= 32, else fall back to hashing); each internal facet
+  // (p, a, b) of a new tetrahedron is written at table[a][b], with (a, b)
+  // ordered so that the tetrahedron's own remaining vertex is on the positive
+  // side of the oriented facet; the tetrahedron across it sees the facet
+  // reversed, so its partner is read at table[b][a]: no search, no branch
+  // on the data.  The stamp catches a partner that was never written.
+  // Returns false with an empty error when the cavity is too large.
+  bool link_local(Mesh<D>& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+    if (++local_stamp_ >= (1u << 26)) {  // the stamp lives in 26 bits of loc_
+      std::fill(loc_.begin(), loc_.end(), 0u);
+      for (auto& e : pair_) e.stamp = 0;
+      local_stamp_ = 1;
+    }
+    const std::uint32_t tag = local_stamp_ << 6;
+    std::uint32_t count = 0;
+    // loc_ holds one entry per vertex id and a last one for the ghost.
+    std::uint32_t maxv = 0;
+    for (const BoundaryRecord<D>& rec : records)
+      for (int i = 0; i < 4; ++i)
+        if (rec.v[i] != kGhost) maxv = std::max(maxv, rec.v[i]);
+    if (loc_.size() < std::size_t(maxv) + 2) {
+      std::vector<std::uint32_t> grown(std::max<std::size_t>(std::size_t(maxv) + 2, 2 * loc_.size()), 0u);
+      if (!loc_.empty()) {
+        std::copy(loc_.begin(), loc_.end() - 1, grown.begin());
+        grown.back() = loc_.back();
+      }
+      loc_.swap(grown);
+    }
+    std::uint32_t* const loc = loc_.data();
+    const std::uint32_t ghost_index = static_cast<std::uint32_t>(loc_.size() - 1);
+    // Branch-free: a vertex not seen in this insertion gets the next id.
+    auto local = [&](std::uint32_t v) -> std::uint32_t {
+      const std::uint32_t at = std::min(v, ghost_index);  // the ghost is the largest id
+      const std::uint32_t e = loc[at];
+      const bool fresh = (e & ~63u) != tag;
+      const std::uint32_t val = fresh ? (tag | (count & 63u)) : e;
+      loc[at] = val;
+      count += fresh;
+      return val & 63u;
+    };
+    // Local ids of each record's vertices (p's entry unused).
+    lv_.resize(records.size() * 4);
+    std::uint32_t* const lv = lv_.data();
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      for (int i = 0; i < 4; ++i) lv[r * 4 + i] = i == records[r].slot ? 0u : local(records[r].v[i]);
+      if (count > 32) return false;
+    }
+    // The facet opposite slot f, its slots in increasing order, is oriented
+    // with vertex f on its positive side when f is even (moving slot f to the
+    // front of a positive simplex takes f transpositions); reverse it when f
+    // is odd.  Rotated to start at p, it reads (p, a, b).
+    auto edge = [&](std::size_t r, int f, std::uint32_t& a, std::uint32_t& b) {
+      const auto& e = kEdge[records[r].slot][f];
+      a = lv[r * 4 + e[0]];
+      b = lv[r * 4 + e[1]];
+    };
+    // Write every internal facet at [a][b], then read partners at [b][a].
+    for (std::size_t r = 0; r < records.size(); ++r)
+      for (int f = 0; f < 4; ++f) {
+        if (f == records[r].slot) continue;
+        std::uint32_t a, b;
+        edge(r, f, a, b);
+        pair_[a * 32 + b] = {Mesh<D>::encode(ids_[r], f), local_stamp_};
+      }
+    for (std::size_t r = 0; r < records.size(); ++r)
+      for (int f = 0; f < 4; ++f) {
+        if (f == records[r].slot) continue;
+        std::uint32_t a, b;
+        edge(r, f, a, b);
+        const PairEntry& e = pair_[b * 32 + a];
+        if (e.stamp != local_stamp_) {
+          error = "cavity boundary is not closed (a new facet without a partner)";
+          return false;
+        }
+        m.set_neighbour(Mesh<D>::encode(ids_[r], f), e.value);
+      }
     return true;
   }
 
@@ -193,6 +317,13 @@ class Restar {
     std::uint32_t vertex = 0, record = 0, stamp = 0;
   };
   std::array<CycleEntry, 64> cycle_{};
+  struct PairEntry {
+    std::uint32_t value = 0, stamp = 0;
+  };
+  std::array<PairEntry, 32 * 32> pair_{};
+  std::vector<std::uint32_t> loc_;  // per vertex: stamp << 6 | local id
+  std::vector<std::uint32_t> lv_;   // local ids of the records' vertices
+  std::uint32_t local_stamp_ = 0;
   std::uint32_t cycle_stamp_ = 0;
   std::uint32_t stamp_ = 0;
 };

@@ -39,8 +39,7 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
 class IdTable {
  public:
   explicit IdTable(std::size_t max_entries)
-      : slots_(std::bit_ceil(max_entries + max_entries / 4 + 16), kEmpty),
-        mask_(slots_.size() - 1) {}
+      : slots_(std::bit_ceil(max_entries + max_entries / 4 + 16), kEmpty), mask_(slots_.size() - 1) {}
   // The stored id whose key equals the new one, or kNone after storing `id`.
   template <class Eq>
   std::uint32_t find_or_insert(std::uint64_t hash, std::uint32_t id, Eq&& equal) {
@@ -92,8 +91,7 @@ int lex_compare(const Point<D>& a, const Point<D>& b) {
 Sign orientation(const ExactKernel& k, const Point2& a, const Point2& b, const Point2& c) {
   return k.orient2d(a, b, c);
 }
-Sign orientation(const ExactKernel& k, const Point3& a, const Point3& b, const Point3& c,
-                 const Point3& d) {
+Sign orientation(const ExactKernel& k, const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   return -k.orient3d(a, b, c, d);
 }
 
@@ -273,8 +271,7 @@ class Validator {
         in_range = false;
         continue;
       }
-      if (first_[x] != x)
-        flag(r_[Check::duplicate_reference], static_cast<std::int64_t>(i / V), -1, x);
+      if (first_[x] != x) flag(r_[Check::duplicate_reference], static_cast<std::int64_t>(i / V), -1, x);
       v_[i] = first_[x];
     }
     return in_range;
@@ -347,9 +344,7 @@ class Validator {
     }
   }
 
-  bool is_boundary(std::size_t inc) const {
-    return !dup_[inc / V] && !extra_[inc] && nb_[inc] == kNone;
-  }
+  bool is_boundary(std::size_t inc) const { return !dup_[inc / V] && !extra_[inc] && nb_[inc] == kNone; }
 
   // 2D: boundary edges, oriented with the triangle on their left, must form one
   // cycle that turns left (or goes straight on) at every vertex and turns once.
@@ -454,8 +449,8 @@ class Validator {
         flag(r_[Check::boundary_convex], s, static_cast<int>(faces[id / 3] % V), far);
     }
     for (std::uint32_t id = 0; id < faces.size() * 3; ++id)
-      if (mate[id] == kNone) flag(r_[Check::boundary_manifold], faces[id / 3] / V,
-                                  static_cast<int>(faces[id / 3] % V));
+      if (mate[id] == kNone)
+        flag(r_[Check::boundary_manifold], faces[id / 3] / V, static_cast<int>(faces[id / 3] % V));
     if (r_[Check::boundary_manifold].count != 0) return;
     // Closed surface: E = 3F/2. Euler characteristic V - E + F must be 2, connected.
     const std::int64_t euler = static_cast<std::int64_t>(boundary_vertices) -
@@ -558,19 +553,32 @@ class Validator {
 
 std::string_view check_name(Check c) {
   switch (c) {
-    case Check::index_range: return "index_range";
-    case Check::duplicate_reference: return "duplicate_reference";
-    case Check::orientation: return "orientation";
-    case Check::duplicate_simplex: return "duplicate_simplex";
-    case Check::non_manifold_facet: return "non_manifold_facet";
-    case Check::facet_same_side: return "facet_same_side";
-    case Check::boundary_manifold: return "boundary_manifold";
-    case Check::boundary_convex: return "boundary_convex";
-    case Check::cover_degree: return "cover_degree";
-    case Check::disconnected: return "disconnected";
-    case Check::missing_vertex: return "missing_vertex";
-    case Check::not_delaunay: return "not_delaunay";
-    case Check::count_: break;
+    case Check::index_range:
+      return "index_range";
+    case Check::duplicate_reference:
+      return "duplicate_reference";
+    case Check::orientation:
+      return "orientation";
+    case Check::duplicate_simplex:
+      return "duplicate_simplex";
+    case Check::non_manifold_facet:
+      return "non_manifold_facet";
+    case Check::facet_same_side:
+      return "facet_same_side";
+    case Check::boundary_manifold:
+      return "boundary_manifold";
+    case Check::boundary_convex:
+      return "boundary_convex";
+    case Check::cover_degree:
+      return "cover_degree";
+    case Check::disconnected:
+      return "disconnected";
+    case Check::missing_vertex:
+      return "missing_vertex";
+    case Check::not_delaunay:
+      return "not_delaunay";
+    case Check::count_:
+      break;
   }
   return "?";
 }
@@ -593,8 +601,8 @@ std::string ValidationReport::summary() const {
     out << ")\n";
   }
   if (skipped) out << "geometric checks skipped\n";
-  if (out.str().empty()) out << (lower_dimensional ? "valid (lower-dimensional input, no simplex)\n"
-                                                  : "valid Delaunay\n");
+  if (out.str().empty())
+    out << (lower_dimensional ? "valid (lower-dimensional input, no simplex)\n" : "valid Delaunay\n");
   return out.str();
 }
 

@@ -1,5 +1,6 @@
 // `dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]
-//   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE] [--stats FILE.json]`
+//   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE] [--stats FILE.json]
+//   [--exact-sphere] [--enclosing-box]` (the last two: --algo george only)
 // (design.md section 5). Calls dlab::run(); after an inexact kernel (float,
 // epsilon) the result is checked by the exact validator, and an invalid or
 // non-Delaunay result is a failure (exit 1) like an algorithm that reports one.
@@ -62,7 +63,7 @@ int cmd_triangulate(int argc, char** argv) {
     a = parse_args(argc, argv, 2,
                    {"-o", "--algo", "--kernel", "--policy", "--order", "--seed", "--points-out",
                     "--stats"},
-                   {});
+                   {"--exact-sphere", "--enclosing-box"});
     if (a.positional.size() != 1)
       throw UsageError(a.positional.empty() ? "missing INPUT"
                                             : "unexpected argument '" + a.positional[1] + "'");
@@ -72,6 +73,8 @@ int cmd_triangulate(int argc, char** argv) {
     opt.policy = a.get("--policy").value_or(kernel_is_exact(opt.kernel) ? "sos" : "strict");
     opt.order = a.get("--order").value_or(opt.order);
     opt.seed = a.u64("--seed", opt.seed);
+    opt.exact_sphere = a.has("--exact-sphere");    // george only
+    opt.enclosing_box = a.has("--enclosing-box");  // george only
     if (opt.policy != "sos" && opt.policy != "strict")
       throw UsageError("--policy must be sos or strict, not '" + opt.policy + "'");
     if (opt.order != "input" && opt.order != "random" && opt.order != "brio" && opt.order != "hilbert")

@@ -10,5 +10,6 @@ int cmd_check(int argc, char** argv);
 int cmd_predicate(int argc, char** argv);
 int cmd_gen(int argc, char** argv);
 int cmd_demo(int argc, char** argv);
+int cmd_flip(int argc, char** argv);
 
 }  // namespace dlab::cli

@@ -17,8 +17,10 @@ const char* const kUsage =
     "  dlab check INPUT SIMPLICES       exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
     "  dlab predicate NAME K COORD...   NAME: orient2d incircle orient3d insphere; prints -1, 0 or 1\n"
     "  dlab gen GENERATOR [options]     writes a point set (dlab gen --help lists generators)\n"
+    "  dlab flip INPUT SIMPLICES [-o OUT]  flip a triangulation toward Delaunay (exit 1 if stuck)\n"
+    "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
-    "A: bowyer-watson (default), lawson, tanemura, george. K: adaptive (default), integer, mp,\n"
+    "A: bowyer-watson (default), lawson, george. K: adaptive (default), integer, mp,\n"
     "float, epsilon. INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), or a\n"
     "Triangle/TetGen .node file; '-' is standard input.\n"
     "Exit status: 0 success, 1 the algorithm failed or its result is invalid, 2 bad input or usage.\n";
@@ -38,6 +40,7 @@ int main(int argc, char** argv) {
     if (cmd == "predicate") return dlab::cli::cmd_predicate(argc, argv);
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
+    if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << kUsage;
       return 0;

@@ -48,20 +48,21 @@ ParsedDouble parse_double(std::string_view tok) {
                            hex ? std::chars_format::hex : std::chars_format::general);
   if (r.ptr != body.data() + body.size()) return out;  // trailing garbage or nothing read
   if (r.ec == std::errc::result_out_of_range) {
-    // libstdc++ reports both overflow and underflow-to-zero this way and leaves v
-    // unset; strtod (C locale: this program never calls setlocale) says which.
-    // Only the direction is taken from it; an underflow then is a signed zero,
-    // which is the correctly rounded value (from_chars returns subnormals itself).
+    // libstdc++ reports both overflow and underflow to zero this way and leaves
+    // v unset (a subnormal result comes back normally). strtod, in the C locale
+    // (this program never calls setlocale), says which one it was and gives the
+    // correctly rounded value: a signed zero after an underflow.
     const std::string copy(tok);
     const double s = std::strtod(copy.c_str(), nullptr);
     if (std::isinf(s)) {
       out.status = ParseStatus::out_of_range;
       return out;
     }
-    v = 0;
-  } else if (r.ec != std::errc()) {
+    out.status = ParseStatus::ok;
+    out.value = s;
     return out;
   }
+  if (r.ec != std::errc()) return out;
   out.status = ParseStatus::ok;
   out.value = negative ? -v : v;
   return out;

@@ -134,9 +134,10 @@ namespace {
   const auto adx = xp::diff(a[0], d[0]), ady = xp::diff(a[1], d[1]), adz = xp::diff(a[2], d[2]);
   const auto bdx = xp::diff(b[0], d[0]), bdy = xp::diff(b[1], d[1]), bdz = xp::diff(b[2], d[2]);
   const auto cdx = xp::diff(c[0], d[0]), cdy = xp::diff(c[1], d[1]), cdz = xp::diff(c[2], d[2]);
-  const auto bc = bdx * cdy - bdy * cdx;  // <= 16
-  const auto ca = cdx * ady - cdy * adx;
-  const auto ab = adx * bdy - ady * bdx;
+  auto bc = bdx * cdy - bdy * cdx;  // <= 16
+  auto ca = cdx * ady - cdy * adx;
+  auto ab = adx * bdy - ady * bdx;
+  bc.compress(), ca.compress(), ab.compress();  // same values, shorter
   const auto det = (bc * adz + ca * bdz) + ab * cdz;  // <= 192
   static_assert(decltype(det)::capacity == 192);
   return decided(det.sign(), stage_d);
@@ -161,9 +162,10 @@ Staged orient3d_slow(const Point3& pa, const Point3& pb, const Point3& pc, const
   if (det > bound || -det > bound) return decided(det, stage_a);
 
   // Stage B.
-  const auto bc = prod_diff(bdx, cdy, cdx, bdy);
-  const auto ca = prod_diff(cdx, ady, adx, cdy);
-  const auto ab = prod_diff(adx, bdy, bdx, ady);
+  auto bc = prod_diff(bdx, cdy, cdx, bdy);
+  auto ca = prod_diff(cdx, ady, adx, cdy);
+  auto ab = prod_diff(adx, bdy, bdx, ady);
+  bc.compress(), ca.compress(), ab.compress();  // same values, shorter
   const auto fin = (xp::scale(bc, adz) + xp::scale(ca, bdz)) + xp::scale(ab, cdz);  // <= 24
   static_assert(decltype(fin)::capacity == 24);
   det = fin.estimate();
@@ -204,12 +206,13 @@ namespace {
   const auto adx = xp::diff(a[0], d[0]), ady = xp::diff(a[1], d[1]);
   const auto bdx = xp::diff(b[0], d[0]), bdy = xp::diff(b[1], d[1]);
   const auto cdx = xp::diff(c[0], d[0]), cdy = xp::diff(c[1], d[1]);
-  const auto alift = adx * adx + ady * ady;  // <= 16
-  const auto blift = bdx * bdx + bdy * bdy;
-  const auto clift = cdx * cdx + cdy * cdy;
-  const auto bc = bdx * cdy - bdy * cdx;  // <= 16
-  const auto ca = cdx * ady - cdy * adx;
-  const auto ab = adx * bdy - ady * bdx;
+  auto alift = adx * adx + ady * ady;  // <= 16
+  auto blift = bdx * bdx + bdy * bdy;
+  auto clift = cdx * cdx + cdy * cdy;
+  auto bc = bdx * cdy - bdy * cdx;  // <= 16
+  auto ca = cdx * ady - cdy * adx;
+  auto ab = adx * bdy - ady * bdx;
+  for (auto* e : {&alift, &blift, &clift, &bc, &ca, &ab}) e->compress();  // same values, shorter
   const auto det = (alift * bc + blift * ca) + clift * ab;  // <= 3 * 512
   static_assert(decltype(det)::capacity == 1536);
   return decided(det.sign(), stage_d);
@@ -323,8 +326,9 @@ Expansion<24> det3(const Point3& p, const Point3& q, const Point3& r) {
       if (j != i) rows[k++] = j;
     const Point3 &r0 = *p[rows[0]], &r1 = *p[rows[1]], &r2 = *p[rows[2]], &r3 = *p[rows[3]];
     // O = -det3(r1,r2,r3) + det3(r0,r2,r3) - det3(r0,r1,r3) + det3(r0,r1,r2)   (<= 96)
-    const auto o = (det3(r0, r2, r3) - det3(r1, r2, r3)) + (det3(r0, r1, r2) - det3(r0, r1, r3));
+    auto o = (det3(r0, r2, r3) - det3(r1, r2, r3)) + (det3(r0, r1, r2) - det3(r0, r1, r3));
     static_assert(decltype(o)::capacity == 96);
+    o.compress();  // same value, shorter
     const Point3& q = *p[i];
     auto term = (xp::scale(xp::scale(o, q[0]), q[0]) + xp::scale(xp::scale(o, q[1]), q[1])) +
                 xp::scale(xp::scale(o, q[2]), q[2]);

@@ -1,13 +1,16 @@
 // `adaptive`: Shewchuk's adaptive-precision predicates, written from the
 // mathematics of J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic
 // and Fast Robust Geometric Predicates", DCG 18 (1997), section 4 (orient2d,
-// orient3d, incircle, insphere; stages A, B, C, D), preceded by a semi-static
-// filter (bound from the largest |coordinate difference| per axis, as in the
-// filters of CGAL and Geogram; our own constants, derived below).
+// orient3d, incircle, insphere; stages A, B, C, D). The first stage is inline
+// and branch-light: Shewchuk's stage A for orient2d and orient3d, a semi-static
+// filter for incircle (bound from the lifts) and insphere (bound from the
+// largest |coordinate difference| per axis, as in CGAL's and Geogram's filters;
+// our own constants, derived below). Everything after it is out of line.
 //
 // Stages (stage_names): 0 "filter", 1 "A", 2 "B", 3 "C", 4 "D", 5 "mp".
-//   filter: |det| > c * (product of per-axis maxima)        (inline, this file)
-//   A:      |det| > errboundA * permanent                    (adaptive_kernel.cpp)
+//   filter: |det| > c * S^2 (incircle) or c * (per-axis maxima) (insphere)
+//   A:      |det| > errboundA * permanent (inline for orient2d / orient3d, and
+//           again out of line after the exponent guard, adaptive_kernel.cpp)
 //   B:      exact expansion of the determinant of the rounded differences
 //   C:      B + first-order correction by the differences' roundoff tails
 //   D:      exact determinant (expansion arithmetic)
@@ -64,11 +67,13 @@ constexpr Eb minor3() { return add(add(mul(diff_node, minor2()), mul(diff_node, 
 // comparison only: orient2d uses stage A inline instead, see below.)
 inline constexpr double o2_filter =
     filter_constant(mul(diff_node, diff_node), mul(diff_node, diff_node), 2);
-// orient3d: det = (adz*m1 + bdz*m2) + cdz*m3;   bound = c * mx * my * mz.
+// orient3d: det = (adz*m1 + bdz*m2) + cdz*m3;   bound = c * mx * my * mz. (Derived for
+// comparison only: orient3d uses stage A inline instead, see below.)
 inline constexpr double o3_filter =
     filter_constant(add(mul(diff_node, minor2()), mul(diff_node, minor2())),
                     mul(diff_node, minor2()), 3);
 // incircle: det = (L_a*m_a + L_b*m_b) + L_c*m_c;   bound = c * mx * my * M * M, M = max(mx, my).
+// (Derived for comparison: incircle uses the cheaper lift filter ic_lift_filter below.)
 inline constexpr double ic_filter =
     filter_constant(add(mul(lift2(), minor2()), mul(lift2(), minor2())), mul(lift2(), minor2()), 4);
 // insphere: det = (L_d*M_d - L_c*M_c) + (L_b*M_b - L_a*M_a);   bound = c * mx*my*mz * M * M.
@@ -78,11 +83,9 @@ inline constexpr double is_filter =
 
 // Filter guard (error_bounds.md 3.2): every per-axis maximum >= lo (no harmful
 // underflow; the bound itself stays normal), and det finite (no overflow).
-inline constexpr double o3_lo = 0x1p-315, ic_lo = 0x1p-235, is_lo = 0x1p-185;
+inline constexpr double is_lo = 0x1p-185;
 // Exact-stage guard (error_bounds.md 2): every |coordinate difference| <= hi.
 inline constexpr double o2_hi = 0x1p+490, o3_hi = 0x1p+325, ic_hi = 0x1p+245, is_hi = 0x1p+195;
-// Inline orient2d stage A: permanent >= this (error_bounds.md 4.6).
-inline constexpr double o2_fast_min = 0x1p-900;
 
 // Published constants (design.md section 7 item 6) for comparison; ours are
 // derived independently and checked in tests/test_adaptive_kernel.cpp.
@@ -104,6 +107,25 @@ inline constexpr double icA = (10.0 + 96.0 * eps) * eps, icB = (4.0 + 48.0 * eps
                         icC = (44.0 + 576.0 * eps) * e2;
 inline constexpr double isA = (16.0 + 224.0 * eps) * eps, isB = (5.0 + 72.0 * eps) * eps,
                         isC = (80.0 + 4096.0 * eps) * e2;  // our own stage-C formula (4.4)
+
+// incircle filter from the lifts it computes anyway (error_bounds.md 3.3):
+// |det| > ic_lift_filter * S * S, S = (alift + blift) + clift, S >= ic_lift_lo, det finite.
+// Shewchuk's stage A bound icA * P^ with P^ <= (1+eps)^7 P and P <= S^2 / (3 (1-eps)^8);
+// the bound c * S * S itself loses up to (1-eps)^2.
+constexpr double pow_int(double b, int n) {
+  double r = 1;
+  for (int i = 0; i < n; ++i) r *= b;
+  return r;
+}
+inline constexpr double ic_lift_filter =
+    icA * pow_int(1 + eps, 7) / (3 * pow_int(1 - eps, 10)) * (1 + 0x1p-40);
+inline constexpr double ic_lift_lo = 0x1p-480;
+
+// Inline orient2d stage A (error_bounds.md 4.6).
+inline constexpr double o2_fast = o2A * (1 + 0x1p-40), o2_fast_abs = 0x1p-1072;
+// Inline orient3d stage A (error_bounds.md 4.6).
+inline constexpr double o3_fast = o3A * (1 + 0x1p-40);
+inline constexpr double o3_fast_min = 0x1p-800, o3_fast_zmax = 0x1p+100;
 
 // Out-of-line stages A..D and the mp fallback (adaptive_kernel.cpp).
 Staged orient2d_slow(const Point2& a, const Point2& b, const Point2& c);
@@ -132,22 +154,19 @@ struct AdaptiveKernel {
   static constexpr std::array<std::string_view, 6> stage_names = {"filter", "A", "B",
                                                                   "C",      "D", "mp"};
 
-  // orient2d has no semi-static filter: Shewchuk's stage A (bound 3 eps times the
-  // permanent |acx bcy| + |acy bcx|) is as cheap and sharper. Inline guard
-  // (error_bounds.md 4.6): permanent >= 2^-900, so that gradual-underflow crumbs
-  // (at most 2^-1074) sit far inside the bound's second-order slack; overflow
-  // makes the permanent infinite and the test false.
+  // orient2d has no semi-static filter: Shewchuk's stage A (bound o2A times the
+  // permanent |dl| + |dr|) is as cheap and sharper. Two refinements
+  // (error_bounds.md 4.6): |dl + dr| replaces |dl| + |dr| (equal when the signs
+  // agree; when they differ the sign of det is exact anyway), and the additive
+  // 2^-1072 absorbs gradual-underflow crumbs (o2_fast carries the extra rounding).
   static Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) {
     const double acx = a[0] - c[0], bcx = b[0] - c[0];
     const double acy = a[1] - c[1], bcy = b[1] - c[1];
     const double dl = acx * bcy, dr = acy * bcx;
     const double det = dl - dr;
-    const double perm = std::fabs(dl) + std::fabs(dr);
-    const double bound = adaptive::o2A * perm;
-    if (perm >= adaptive::o2_fast_min) {
-      if (det > bound) return {Sign::positive, adaptive::stage_a};
-      if (-det > bound) return {Sign::negative, adaptive::stage_a};
-    }
+    const double bound = adaptive::o2_fast * std::fabs(dl + dr) + adaptive::o2_fast_abs;
+    if (det > bound) return {Sign::positive, adaptive::stage_a};
+    if (-det > bound) return {Sign::negative, adaptive::stage_a};
     return adaptive::orient2d_slow(a, b, c);
   }
 
@@ -163,28 +182,36 @@ struct AdaptiveKernel {
     const double ca = cdx * ady - cdy * adx;
     const double ab = adx * bdy - ady * bdx;
     const double det = (alift * bc + blift * ca) + clift * ab;
-    const double mx = std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx));
-    const double my = std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy));
-    const double mmax = std::max(mx, my);
-    if (adaptive::filter_ok(det, adaptive::ic_filter * mx * my * mmax * mmax, std::min(mx, my),
-                            adaptive::ic_lo))
+    const double lifts = (alift + blift) + clift;
+    if (adaptive::filter_ok(det, adaptive::ic_lift_filter * lifts * lifts, lifts,
+                            adaptive::ic_lift_lo))
       return {adaptive::sign_nonzero(det), adaptive::stage_filter};
     return adaptive::incircle_slow(a, b, c, d);
   }
 
+  // orient3d: Shewchuk's stage A inline (bound o3A times the permanent), with the
+  // guard of error_bounds.md 4.6: permanent >= 2^-800 and every |z difference|
+  // <= 2^100, so gradual-underflow crumbs of the 2x2 products (scaled by z) stay
+  // far below the bound's extra 2^-40 relative slack; overflow makes the
+  // permanent infinite or NaN and the test false.
   static Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c,
                                 const Point3& d) {
     const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
     const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
     const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
-    const double det = (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx)) +
-                       cdz * (adx * bdy - ady * bdx);
-    const double mx = std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx));
-    const double my = std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy));
-    const double mz = std::max(std::max(std::fabs(adz), std::fabs(bdz)), std::fabs(cdz));
-    if (adaptive::filter_ok(det, adaptive::o3_filter * mx * my * mz, std::min(std::min(mx, my), mz),
-                            adaptive::o3_lo))
-      return {adaptive::sign_nonzero(det), adaptive::stage_filter};
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double det =
+        (adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy)) + cdz * (adxbdy - bdxady);
+    const double az = std::fabs(adz), bz = std::fabs(bdz), cz = std::fabs(cdz);
+    const double perm = ((std::fabs(bdxcdy) + std::fabs(cdxbdy)) * az +
+                         (std::fabs(cdxady) + std::fabs(adxcdy)) * bz) +
+                        (std::fabs(adxbdy) + std::fabs(bdxady)) * cz;
+    const double zmax = std::max(std::max(az, bz), cz);
+    if ((std::fabs(det) > adaptive::o3_fast * perm) & (perm >= adaptive::o3_fast_min) &
+        (zmax <= adaptive::o3_fast_zmax))
+      return {adaptive::sign_nonzero(det), adaptive::stage_a};
     return adaptive::orient3d_slow(a, b, c, d);
   }
 

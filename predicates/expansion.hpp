@@ -132,31 +132,36 @@ inline int grow_expansion_zeroelim(int elen, const double* e, double b, double* 
 inline int fast_expansion_sum_zeroelim(int elen, const double* e, int flen, const double* f,
                                        double* h) {
   // Merge by magnitude on the fly: g_k is the next smallest of e[ei], f[fi].
-  // Branch-free selection and zero elimination: the merge order and the zero
-  // pattern are data-dependent, and mispredicted branches dominated the cost.
+  // The selection is branch-free (the merge order is data-dependent and its
+  // mispredicted branches dominated the cost), and so is zero elimination.
   int ei = 0, fi = 0;
-  auto next = [&]() -> double {
-    const double ev = ei < elen ? e[ei] : 0.0;
-    const double fv = fi < flen ? f[fi] : 0.0;
-    const bool take_e = (ei < elen) & ((fi >= flen) | (std::fabs(ev) <= std::fabs(fv)));
-    ei += take_e;
-    fi += !take_e;
-    return take_e ? ev : fv;
+  auto take = [&]() -> double {  // with bounds checks: only for the first two
+    const bool te = (fi >= flen) || (ei < elen && std::fabs(e[ei]) <= std::fabs(f[fi]));
+    return te ? e[ei++] : f[fi++];
   };
   const int m = elen + flen;
-  double q = next();
+  double q = take();
   int hn = 0;
   if (m >= 2) {
-    const double g2 = next();
+    const double g2 = take();
     double hh;
     fast_two_sum(g2, q, q, hh);  // |g2| >= |g1|
     h[hn] = hh;
     hn += hh != 0.0;
-    for (int k = 2; k < m; ++k) {
-      two_sum(q, next(), q, hh);
+    auto absorb = [&](double g) {
+      two_sum(q, g, q, hh);
       h[hn] = hh;
       hn += hh != 0.0;
+    };
+    while (ei < elen && fi < flen) {
+      const double ev = e[ei], fv = f[fi];
+      const bool te = std::fabs(ev) <= std::fabs(fv);
+      ei += te;
+      fi += !te;
+      absorb(te ? ev : fv);
     }
+    while (ei < elen) absorb(e[ei++]);
+    while (fi < flen) absorb(f[fi++]);
   }
   if (q != 0.0 || hn == 0) h[hn++] = q;
   return hn;

@@ -63,6 +63,7 @@ class IntegerGrid {
     const Index r = (Index{1} << (std::min(bits, 54) - 1)) - 1;
     g.lo_.fill(-r);
     g.hi_.fill(r);
+    g.cache_bounds();
     return g;
   }
 
@@ -112,6 +113,7 @@ class IntegerGrid {
         g.lo_[j] = std::max(g.lo_[j], -top);
         g.hi_[j] = std::min(g.hi_[j], top);
       }
+      g.cache_bounds();
       return g;
     }
     return unit(bits);  // not reached
@@ -133,8 +135,8 @@ class IntegerGrid {
   // NaN maps to the low end. Deterministic for every double.
   Index index(double x, int axis) const {
     const double t = scaled(x);  // exact x / h
-    if (!(t > static_cast<double>(lo_[axis]))) return lo_[axis];
-    if (!(t < static_cast<double>(hi_[axis]))) return hi_[axis];
+    if (!(t > lo_d_[axis])) return lo_[axis];
+    if (!(t < hi_d_[axis])) return hi_[axis];
     // |t| < 2^62 here: truncate, then round the exact fraction (t - trunc(t) is
     // exact: Sterbenz for |t| >= 1, t itself below; 0 once |t| >= 2^52).
     Index i = static_cast<Index>(t);
@@ -196,6 +198,12 @@ class IntegerGrid {
     s2_ = std::ldexp(1.0, -e <= 1023 ? 0 : -e - 1023);
   }
   double scaled(double x) const { return x * s1_ * s2_; }
+  void cache_bounds() {  // exact: the bounds are integers below 2^62 from doubles
+    for (int j = 0; j < D; ++j) {
+      lo_d_[j] = static_cast<double>(lo_[j]);
+      hi_d_[j] = static_cast<double>(hi_[j]);
+    }
+  }
 
   // Number of distinct points (numeric equality: -0 == +0); finite inputs.
   static std::size_t distinct(std::vector<Point<D>>& v) {
@@ -207,6 +215,7 @@ class IntegerGrid {
   int e_ = 0;
   double h_ = 1, s1_ = 1, s2_ = 1;
   IPoint lo_{}, hi_{};
+  std::array<double, D> lo_d_{}, hi_d_{};  // lo_, hi_ as doubles
 };
 
 }  // namespace dlab

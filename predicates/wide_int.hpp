@@ -57,7 +57,7 @@ struct WideInt {
   friend constexpr WideInt operator+(const WideInt& a, const WideInt& b) {
     WideInt r;
     std::uint64_t carry = 0;
-    for (int i = 0; i < N; ++i) {
+    _Pragma("GCC unroll 8") for (int i = 0; i < N; ++i) {
       const std::uint64_t s = a.limb[i] + b.limb[i];
       const std::uint64_t t = s + carry;
       carry = static_cast<std::uint64_t>(s < a.limb[i]) | static_cast<std::uint64_t>(t < s);
@@ -68,7 +68,7 @@ struct WideInt {
   friend constexpr WideInt operator-(const WideInt& a, const WideInt& b) {
     WideInt r;
     std::uint64_t borrow = 0;
-    for (int i = 0; i < N; ++i) {
+    _Pragma("GCC unroll 8") for (int i = 0; i < N; ++i) {
       const std::uint64_t d = a.limb[i] - b.limb[i];
       const std::uint64_t t = d - borrow;
       borrow = static_cast<std::uint64_t>(a.limb[i] < b.limb[i]) |
@@ -127,16 +127,15 @@ constexpr WideInt<R> mul(const WideInt<A>& a, const WideInt<B>& b) {
   const WideInt<A> ua = a.negative() ? -a : a;
   const WideInt<B> ub = b.negative() ? -b : b;
   WideInt<R> r;
-  for (int i = 0; i < A && i < R; ++i) {
-    if (ua.limb[i] == 0) continue;
+  _Pragma("GCC unroll 8") for (int i = 0; i < A && i < R; ++i) {
     std::uint64_t carry = 0;
-    int j = 0;
-    for (; j < B && i + j < R; ++j) {
+    _Pragma("GCC unroll 8") for (int j = 0; j < B; ++j) {
+      if (i + j >= R) break;
       const uint128 t = static_cast<uint128>(ua.limb[i]) * ub.limb[j] + r.limb[i + j] + carry;
       r.limb[i + j] = static_cast<std::uint64_t>(t);
       carry = static_cast<std::uint64_t>(t >> 64);
     }
-    if (i + j < R) r.limb[i + j] = carry;  // untouched by earlier rows
+    if (i + B < R) r.limb[i + B] = carry;  // untouched by earlier rows
   }
   return a.negative() != b.negative() ? -r : r;
 }

@@ -59,8 +59,8 @@ std::vector<Simplex<3>> cgal_delaunay(const std::vector<Point3>& points) {
   std::vector<Simplex<3>> out;
   if (dt.dimension() < 3) return out;
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    out.push_back(canonical<3>({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
-                                c->vertex(3)->info()}));
+    out.push_back(canonical<3>(
+        {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()}));
   std::sort(out.begin(), out.end());
   return out;
 }

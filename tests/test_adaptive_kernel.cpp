@@ -318,28 +318,47 @@ TEST_CASE("exponent guards: exact at their edges, mp just beyond", "[adaptive]")
     CHECK(ak.orient2d_staged(e, f, c).stage != adaptive::stage_mp);
     CHECK(ak.orient2d_staged(e, f, c).sign == Sign::zero);
   }
-  // Inline orient2d stage A: permanent >= 2^-900 answers inline; 2^-902 goes to
-  // the slow path, whose grid guard (2 * -451 < -900) then sends it to mp.
-  for (int e : {-450, -451}) {
+  // Inline orient2d stage A answers while |det| clears o2A |dl + dr| + 2^-1072:
+  // det = 2^-1060 does; det = 2^-1074 goes to the slow path, whose grid guard
+  // (2 * -537 < -900) sends it to mp.
+  for (int e : {-530, -537}) {
     const double u = std::ldexp(1.0, e);
     const Staged s = ak.orient2d_staged({u, 0}, {0, u}, {0, 0});
     CHECK(s.sign == Sign::positive);
-    CHECK(s.stage == (e == -450 ? adaptive::stage_a : adaptive::stage_mp));
+    CHECK(s.stage == (e == -530 ? adaptive::stage_a : adaptive::stage_mp));
   }
-  // Filter guard: every per-axis maximum >= lo; below, the slow path answers.
+  // Inline orient3d stage A: permanent >= 2^-800 and |z differences| <= 2^100 (beyond
+  // either edge the slow path answers; its stage A has the same index, so only the
+  // signs are observable here).
   {
-    const double lo = adaptive::o3_lo;
     const Point3 o{0, 0, 0};
-    CHECK(ak.orient3d_staged({lo, 0, 0}, {0, lo, 0}, {0, 0, -lo}, o).stage == adaptive::stage_filter);
-    const Staged s = ak.orient3d_staged({lo, 0, 0}, {0, lo, 0}, {0, 0, -lo / 2}, o);
-    CHECK(s.stage != adaptive::stage_filter);
-    CHECK(s.sign == mk.orient3d({lo, 0, 0}, {0, lo, 0}, {0, 0, -lo / 2}, o));
+    for (double u : {0x1p-266, 0x1p-267, 0x1p-300}) {
+      const Point3 pa{u, 0, 0}, pb{0, u, 0}, pc{0, 0, -u};
+      CHECK(ak.orient3d(pa, pb, pc, o) == Sign::negative);  // det = -u^3
+      CHECK(ak.orient3d(pa, pb, pc, o) == mk.orient3d(pa, pb, pc, o));
+    }
+    for (double z : {0x1p100, 0x1.0000000000001p100, 0x1p200}) {
+      const Point3 pa{1, 0, 0}, pb{0, 1, 0}, pc{0, 0, z};
+      CHECK(ak.orient3d(pa, pb, pc, o) == Sign::positive);
+    }
+  }
+  // Filter guard (insphere): every per-axis maximum >= lo; below, the slow path answers.
+  {
     const double l2 = adaptive::is_lo;
     const Point3 pa{l2, 0, 0}, pb{0, l2, 0}, pc{-l2, 0, 0}, pd{0, 0, l2}, inside{0, 0, l2 / 2};
     CHECK(ak.insphere_staged(pa, pb, pc, pd, {0, 0, 0}).stage == adaptive::stage_filter);
     const Staged t = ak.insphere_staged(pa, pb, pc, pd, inside);  // z maximum l2/2 < lo
     CHECK(t.stage != adaptive::stage_filter);
     CHECK(t.sign == mk.insphere(pa, pb, pc, pd, inside));
+  }
+  // incircle lift filter: S = sum of the lifts >= 2^-480.
+  {
+    const double u = 0x1p-240;  // S = 2^-479
+    const Point2 o{0, 0};
+    CHECK(ak.incircle_staged({u, 0}, {0, u}, {-u, 0}, o).stage == adaptive::stage_filter);
+    const Staged t = ak.incircle_staged({u / 2, 0}, {0, u / 2}, {-u / 2, 0}, o);  // S = 2^-481
+    CHECK(t.stage != adaptive::stage_filter);
+    CHECK(t.sign == Sign::positive);
   }
   // Overflow: an infinite determinant is never trusted by the filter.
   {
@@ -469,7 +488,7 @@ namespace {
 
 // Worst observed error, in units of eps times the quantity the bound scales.
 struct Worst {
-  double a = 0, b = 0, filter = 0;
+  double a = 0, b = 0, filter = 0, lift = 0;
 };
 
 // For one call: det (double, the kernel's evaluation order = det::X<double>),
@@ -528,8 +547,12 @@ TEST_CASE("stage A, stage B and filter error bounds hold on adversarial inputs",
       const double mx = std::max({ab(u[0]), ab(v[0]), ab(t[0])});
       const double my = std::max({ab(u[1]), ab(v[1]), ab(t[1])});
       const double M = std::max(mx, my);
-      record(wi, det::incircle<double>(a, b, c, d), det::incircle<Q>(u, v, t, z2),
-             det::incircle<Q>(a, b, c, d), P, mx * my * M * M);
+      const double det = det::incircle<double>(a, b, c, d);
+      const Q D = det::incircle<Q>(a, b, c, d);
+      record(wi, det, det::incircle<Q>(u, v, t, z2), D, P, mx * my * M * M);
+      const double S = (lift(u) + lift(v)) + lift(t);  // the kernel's lift filter scale
+      const Q err = abs(Q(det) - D) - Q(adaptive::eps) * abs(Q(det));
+      wi.lift = std::max(wi.lift, static_cast<double>(err / Q(S * S)) / adaptive::eps);
     }
     {  // orient3d
       const Point3 u = minus<3>(p[0], p[3]), v = minus<3>(p[1], p[3]), t = minus<3>(p[2], p[3]);
@@ -572,6 +595,12 @@ TEST_CASE("stage A, stage B and filter error bounds hold on adversarial inputs",
   };
   check("orient2d", w2, o2A, o2B, o2_filter);
   check("incircle", wi, icA, icB, ic_filter);
+  INFO("incircle lift filter: worst " << wi.lift << " (bound " << ic_lift_filter / eps << ")");
+  CHECK(wi.lift <= ic_lift_filter / eps);
+  CHECK(wi.lift > 0.05 * ic_lift_filter / eps);
+  // The inline stage-A constants of orient2d and orient3d (same permanents).
+  CHECK(w2.a <= o2_fast / eps);
+  CHECK(w3.a <= o3_fast / eps);
   check("orient3d", w3, o3A, o3B, o3_filter);
   check("insphere", ws, isA, isB, is_filter);
 }

@@ -484,7 +484,6 @@ TEST_CASE("integer kernel agrees with mp on snapped random points across exponen
 TEST_CASE("integer kernel on exactly degenerate sets, scaled, translated, moved by ulps",
           "[integer][mp][degenerate]") {
   Rng r{14};
-  const IntegerKernel any;
   // Pythagorean cocircular set: the 12 integer points of the circle of radius 5.
   std::vector<Point2> circle;
   for (int sx : {-1, 1})
@@ -578,7 +577,6 @@ TEST_CASE("integer kernel on exactly degenerate sets, scaled, translated, moved 
       agree_with_mp_3d<IntegerKernel128>(sp2, r, 100);
     }
   }
-  (void)any;
 }
 
 namespace {

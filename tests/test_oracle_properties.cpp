@@ -14,15 +14,15 @@
 // The validator itself is cross-checked against CGAL: CGAL's output passes it,
 // and CGAL's output with one simplex removed, reversed or one edge flipped
 // fails it for the right reason.
-#include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <chrono>
-#include <ctime>
 #include <cmath>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
+#include <ctime>
 #include <map>
 #include <span>
 #include <string>
@@ -44,10 +44,11 @@ using dlab::RunOptions;
 using dlab::RunResult;
 using Outcome = dlab::RunResult::Outcome;
 
-// Every exact kernel; DLAB_ORACLE_KERNELS=mp,integer narrows the list (debugging only).
-std::vector<std::string> exact_kernels() {
-  const char* env = std::getenv("DLAB_ORACLE_KERNELS");
-  if (env == nullptr || *env == 0) return {"adaptive", "integer", "mp"};
+// A comma-separated list from the environment, or the default (debugging only:
+// DLAB_ORACLE_KERNELS=mp,integer, DLAB_ORACLE_ALGORITHMS=bowyer-watson).
+std::vector<std::string> list_from_env(const char* name, std::vector<std::string> fallback) {
+  const char* env = std::getenv(name);
+  if (env == nullptr || *env == 0) return fallback;
   std::vector<std::string> out(1);
   for (const char* c = env; *c; ++c)
     if (*c == ',')
@@ -55,6 +56,9 @@ std::vector<std::string> exact_kernels() {
     else
       out.back() += *c;
   return out;
+}
+std::vector<std::string> exact_kernels() {
+  return list_from_env("DLAB_ORACLE_KERNELS", {"adaptive", "integer", "mp"});
 }
 const std::vector<std::string> kExactKernels = exact_kernels();
 
@@ -79,9 +83,12 @@ const std::vector<Point<D>>& points_of(const PointSet& s) {
 
 std::string outcome_name(Outcome o) {
   switch (o) {
-    case Outcome::ok: return "ok";
-    case Outcome::lower_dimensional: return "lower_dimensional";
-    case Outcome::failed: return "failed";
+    case Outcome::ok:
+      return "ok";
+    case Outcome::lower_dimensional:
+      return "lower_dimensional";
+    case Outcome::failed:
+      return "failed";
   }
   return "?";
 }
@@ -111,22 +118,20 @@ bool available(const std::string& algorithm, const std::string& kernel) {
 template <int D>
 rc::Gen<std::vector<Point<D>>> small_lattice(int max_n) {
   return rc::gen::mapcat(rc::gen::inRange(1, 7), [max_n](int r) {
-    return rc::gen::map(
-        rc::gen::container<std::vector<std::array<int, D>>>(
-            rc::gen::container<std::array<int, D>>(rc::gen::inRange(-r, r + 1))),
-        [max_n](const std::vector<std::array<int, D>>& v) {
-          std::vector<Point<D>> p(std::min(v.size(), static_cast<std::size_t>(max_n)));
-          for (std::size_t i = 0; i < p.size(); ++i)
-            for (int j = 0; j < D; ++j) p[i][j] = v[i][j];
-          return p;
-        });
+    return rc::gen::map(rc::gen::container<std::vector<std::array<int, D>>>(
+                            rc::gen::container<std::array<int, D>>(rc::gen::inRange(-r, r + 1))),
+                        [max_n](const std::vector<std::array<int, D>>& v) {
+                          std::vector<Point<D>> p(std::min(v.size(), static_cast<std::size_t>(max_n)));
+                          for (std::size_t i = 0; i < p.size(); ++i)
+                            for (int j = 0; j < D; ++j) p[i][j] = v[i][j];
+                          return p;
+                        });
   });
 }
 
-const char* const kFamilies[] = {"lattice",   "scaled-lattice", "uniform",   "cospherical+inner",
-                                 "rotated",   "flat+off",       "ulp-lattice", "near-duplicates",
-                                 "huge",      "tiny"};
-
+const char* const kFamilies[] = {
+    "lattice",         "scaled-lattice", "uniform", "cospherical+inner", "rotated", "flat+off", "ulp-lattice",
+    "near-duplicates", "huge",           "tiny"};
 
 // One point set from a family; every family is exact-degenerate or near it.
 template <int D>
@@ -134,7 +139,8 @@ std::vector<Point<D>> family_points(int family, std::size_t n, std::uint64_t see
                                     const std::vector<Point<D>>& lattice) {
   namespace gen = dlab::gen;
   switch (family) {
-    case 0: return lattice;
+    case 0:
+      return lattice;
     case 1: {  // times 2^e plus an offset: exact (integers below 2^8, e in [-40, 40])
       const int e = static_cast<int>(seed % 81) - 40;
       auto p = lattice;
@@ -142,14 +148,16 @@ std::vector<Point<D>> family_points(int family, std::size_t n, std::uint64_t see
         for (double& c : q) c = std::ldexp(c, e) + 0.75;
       return p;
     }
-    case 2: return gen::uniform<D>(n, seed);
+    case 2:
+      return gen::uniform<D>(n, seed);
     case 3: {
       auto p = gen::cospherical<D>(std::max<std::size_t>(n, 4), seed);
       const auto inner = gen::uniform<D>(n / 8, seed + 1, -0.5, 0.5);
       p.insert(p.end(), inner.begin(), inner.end());
       return p;
     }
-    case 4: return gen::rotated_lattice<D>(n);
+    case 4:
+      return gen::rotated_lattice<D>(n);
     case 5:
       if constexpr (D == 3)
         if (seed % 2) return gen::coplanar(n, seed % 4, seed);
@@ -159,16 +167,20 @@ std::vector<Point<D>> family_points(int family, std::size_t n, std::uint64_t see
       gen::scale_to_unit<D>(p);
       return gen::perturb_ulps<D>(p, 1 + static_cast<std::int64_t>(seed % 3), seed);
     }
-    case 7: return gen::near_duplicates<D>(n, seed, 3, static_cast<std::int64_t>(seed % 3));
-    case 8: return gen::huge<D>(n, seed, 900 + static_cast<int>(seed % 100));
-    default: return gen::tiny<D>(n, seed);
+    case 7:
+      return gen::near_duplicates<D>(n, seed, 3, static_cast<std::int64_t>(seed % 3));
+    case 8:
+      return gen::huge<D>(n, seed, 900 + static_cast<int>(seed % 100));
+    default:
+      return gen::tiny<D>(n, seed);
   }
 }
 
 // ---- the properties --------------------------------------------------------
 
 // For one algorithm x exact kernel: valid, equal to CGAL, order-independent;
-// the strict policy valid. `cgal_input` is CGAL's answer on the input points
+// the strict policy valid (george: with its exact sphere test; with the
+// default floating one, valid only). `cgal_input` is CGAL's answer on the input points
 // (recomputed here when the kernel snapped them).
 template <int D>
 void check_exact(const std::string& algorithm, const std::string& kernel, const PointSet& input,
@@ -180,6 +192,20 @@ void check_exact(const std::string& algorithm, const std::string& kernel, const 
   o.policy = "sos";
   o.order = "brio";
   o.seed = 1;
+  if (algorithm == "george") {
+    // George's default sphere test is floating (George 1997 section 2.4): the
+    // result must be valid, Delaunay or not. With the exact test, all below holds.
+    for (const char* policy : {"sos", "strict"}) {
+      RunOptions og = o;
+      og.policy = policy;
+      const RunResult rg = dlab::run(input, og);
+      RC_ASSERT(rg.outcome != Outcome::failed);
+      const dlab::ValidationReport repg = dlab::validate(rg.points, rg.simplices);
+      RC_LOG() << "floating spheres, " << policy << ": " << repg.summary();
+      RC_ASSERT(repg.valid());
+    }
+    o.exact_sphere = true;
+  }
   const RunResult r = dlab::run(input, o);
   RC_LOG() << "outcome " << outcome_name(r.outcome) << ": " << r.message << "\n";
   RC_ASSERT(r.outcome != Outcome::failed);
@@ -196,8 +222,8 @@ void check_exact(const std::string& algorithm, const std::string& kernel, const 
   RC_ASSERT(mine.size() == cgal.size());
   RC_ASSERT(mine == cgal);
 
-  for (const auto& [order, seed] : {std::pair<const char*, std::uint64_t>{"input", 0},
-                                    {"random", 7}, {"random", 8}, {"hilbert", 0}}) {
+  for (const auto& [order, seed] :
+       {std::pair<const char*, std::uint64_t>{"input", 0}, {"random", 7}, {"random", 8}, {"hilbert", 0}}) {
     RunOptions o2 = o;
     o2.order = order;
     o2.seed = seed;
@@ -220,7 +246,7 @@ void check_exact(const std::string& algorithm, const std::string& kernel, const 
 }
 
 template <int D>
-void exact_property(std::size_t max_n) {
+void exact_property(const std::string& algorithm, std::size_t max_n) {
   const int family = *rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
   const auto n = *rc::gen::inRange(std::size_t{0}, max_n + 1);
   const auto seed = *rc::gen::inRange<std::uint64_t>(1, 1000000);
@@ -231,9 +257,16 @@ void exact_property(std::size_t max_n) {
   const PointSet input = make_set<D>(pts);
   const auto cgal = dlab::oracle::cgal_delaunay(pts);
   RC_CLASSIFY(cgal.empty(), "lower-dimensional");
-  for (const std::string& algorithm : dlab::algorithm_names())
-    for (const std::string& kernel : kExactKernels)
-      if (available(algorithm, kernel)) check_exact<D>(algorithm, kernel, input, cgal);
+  for (const std::string& kernel : kExactKernels)
+    if (available(algorithm, kernel)) check_exact<D>(algorithm, kernel, input, cgal);
+}
+
+// One property per registered algorithm (so that each one's verdict shows apart).
+template <int D>
+void exact_properties(std::size_t max_n) {
+  for (const std::string& algorithm : list_from_env("DLAB_ORACLE_ALGORITHMS", dlab::algorithm_names()))
+    rc::prop(std::to_string(D) + "D " + algorithm + ": valid, identical to CGAL, order-independent",
+             [algorithm, max_n] { exact_property<D>(algorithm, max_n); });
 }
 
 // Local Delaunay flip of one interior edge (2D), for the validator cross-check.
@@ -268,18 +301,19 @@ bool flip_first_convex_edge(const std::vector<Point2>& p, std::vector<std::uint3
 }  // namespace
 
 TEST_CASE("oracle: exact kernels equal CGAL in 2D", "[oracle]") {
-  rc::prop("2D: valid, identical to CGAL, order-independent", [] { exact_property<2>(200); });
+  exact_properties<2>(300);
 }
 
 TEST_CASE("oracle: exact kernels equal CGAL in 3D", "[oracle]") {
-  rc::prop("3D: valid, identical to CGAL, order-independent", [] { exact_property<3>(60); });
+  exact_properties<3>(100);
 }
 
 TEST_CASE("oracle: the validator accepts CGAL and rejects it broken", "[oracle][validate]") {
   rc::prop("2D", [] {
     const int family = *rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
     const auto lattice = *small_lattice<2>(150);
-    const auto pts = family_points<2>(family, *rc::gen::inRange(3, 150), *rc::gen::inRange(1, 100000), lattice);
+    const auto pts =
+        family_points<2>(family, *rc::gen::inRange(3, 150), *rc::gen::inRange(1, 100000), lattice);
     RC_TAG(kFamilies[family]);
     const auto flat = dlab::oracle::flatten<2>(dlab::oracle::cgal_delaunay(pts));
     const std::span<const Point2> sp(pts);
@@ -307,7 +341,8 @@ TEST_CASE("oracle: the validator accepts CGAL and rejects it broken", "[oracle][
   rc::prop("3D", [] {
     const int family = *rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
     const auto lattice = *small_lattice<3>(60);
-    const auto pts = family_points<3>(family, *rc::gen::inRange(4, 60), *rc::gen::inRange(1, 100000), lattice);
+    const auto pts =
+        family_points<3>(family, *rc::gen::inRange(4, 60), *rc::gen::inRange(1, 100000), lattice);
     RC_TAG(kFamilies[family]);
     const auto flat = dlab::oracle::flatten<3>(dlab::oracle::cgal_delaunay(pts));
     const std::span<const Point3> sp(pts);
@@ -346,35 +381,38 @@ TEST_CASE("oracle: float fails visibly on near-degenerate input without crashing
   }
   std::map<std::string, int> classes;
   int runs = 0;
-  for (const std::string& algorithm : dlab::algorithm_names()) {
-    if (!available(algorithm, "float")) continue;
-    for (const PointSet& ps : batch)
-      for (const char* policy : {"sos", "strict"}) {
-        RunOptions o;
-        o.algorithm = algorithm;
-        o.kernel = "float";
-        o.policy = policy;
-        o.order = "input";
-        RunResult r;
-        REQUIRE_NOTHROW(r = dlab::run(ps, o));
-        ++runs;
-        std::string cls;
-        if (r.outcome == Outcome::failed) {
-          cls = "reported failure";
-        } else {
-          const auto rep = dlab::validate(r.points, r.simplices);
-          cls = !rep.valid() ? "invalid mesh" : (!rep.delaunay() ? "not Delaunay" : "correct");
+  for (const std::string& algorithm : dlab::algorithm_names())
+    for (const char* kernel : {"float", "epsilon"}) {
+      if (!available(algorithm, kernel)) continue;
+      for (const PointSet& ps : batch)
+        for (const char* policy : {"sos", "strict"}) {
+          RunOptions o;
+          o.algorithm = algorithm;
+          o.kernel = kernel;
+          o.policy = policy;
+          o.order = "input";
+          RunResult r;
+          REQUIRE_NOTHROW(r = dlab::run(ps, o));
+          runs += std::string(kernel) == "float";
+          std::string cls;
+          if (r.outcome == Outcome::failed) {
+            cls = "reported failure";
+          } else {
+            const auto rep = dlab::validate(r.points, r.simplices);
+            cls = !rep.valid() ? "invalid mesh" : (!rep.delaunay() ? "not Delaunay" : "correct");
+          }
+          ++classes[algorithm + " " + kernel + " " + policy + ": " + cls];
         }
-        ++classes[algorithm + " " + policy + ": " + cls];
-      }
-  }
+    }
   int failures = 0;
   std::string table;
   for (const auto& [cls, count] : classes) {
     table += "  " + cls + ": " + std::to_string(count) + "\n";
-    if (cls.find("correct") == std::string::npos) failures += count;
+    if (cls.find(" float ") != std::string::npos && cls.find("correct") == std::string::npos)
+      failures += count;
   }
-  WARN("float on " << batch.size() << " near-degenerate sets, " << runs << " runs:\n" << table);
+  WARN("float and epsilon on " << batch.size() << " near-degenerate sets (" << runs << " float runs):\n"
+                               << table);
   REQUIRE(runs > 0);
   CHECK(failures >= 1);
 }

@@ -73,6 +73,9 @@ TEST_CASE("parse_double reads decimal and C99 hexadecimal floats exactly", "[io]
   CHECK(same_bits(parsed("0x1p-1075"), 0.0));                      // tie, to even: 0
   CHECK(parsed("0x1.8p-1074") == 2 * std::numeric_limits<double>::denorm_min());  // tie, to even
   CHECK(same_bits(parsed("-0"), -0.0));
+  // Just below and just above half the smallest subnormal.
+  CHECK(same_bits(parsed("-2.4703282292062327e-324"), -0.0));
+  CHECK(parsed("2.4703282292062328e-324") == std::numeric_limits<double>::denorm_min());
 }
 
 TEST_CASE("parse_double classifies what it rejects", "[io]") {

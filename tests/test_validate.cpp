@@ -4,9 +4,8 @@
 // mp kernel: O(n^4), fine for a few dozen points), hand-built small cases, and
 // deliberately broken versions of both. Each broken case must fail for the
 // right reason (its check count), and a valid one must pass every check.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstdint>
 #include <vector>
 
@@ -214,7 +213,8 @@ TEST_CASE("validate: broken 2D triangulations fail for the right reason", "[vali
     INFO(r.summary());
     CHECK(!r.valid());
     CHECK(r[Check::facet_same_side].count + r[Check::non_manifold_facet].count +
-              r[Check::cover_degree].count > 0);
+              r[Check::cover_degree].count >
+          0);
   }
 }
 
@@ -283,7 +283,7 @@ TEST_CASE("validate: lower-dimensional input and duplicates", "[validate]") {
 
   // Duplicates: a copy of a used point is fine; naming the copy is not.
   auto dup = kite;
-  dup.push_back({4, 1});   // copy of D = 3
+  dup.push_back({4, 1});     // copy of D = 3
   dup.push_back({-0.0, 0});  // copy of A = 0 (-0 equals +0)
   const std::vector<std::uint32_t> good{0, 1, 3, 1, 2, 3};
   const auto rd = dlab::validate(std::span<const Point2>(dup), good);
@@ -372,7 +372,7 @@ TEST_CASE("validate: broken 3D triangulations fail for the right reason", "[vali
   SECTION("an overlapping extra tetrahedron") {
     auto b = t;
     const std::uint32_t a0 = t[0], a1 = t[1], a2 = t[2], a3 = t[3];
-    b.insert(b.end(), {a1, a0, a2, a3});  // the same tetrahedron reversed...
+    b.insert(b.end(), {a1, a0, a2, a3});          // the same tetrahedron reversed...
     std::swap(b[b.size() - 1], b[b.size() - 2]);  // ...and back: a duplicate in another order
     const auto r = dlab::validate(pts, b);
     CHECK(r[Check::duplicate_simplex].count == 1);

@@ -19,10 +19,48 @@ InsertionOrder parse_insertion_order(std::string_view name) {
                    "' (expected input, random, brio or hilbert)");
 }
 
-// Skilling 2004: convert axes to the "transposed" Hilbert index in place
+// 3D (any n): Skilling 2004: convert axes to the "transposed" Hilbert index in place
 // (undo the excess rotations/reflections from the top bit down, then Gray
 // encode), and read the index off bit-plane by bit-plane.
+// 2D: a 4-state machine, one table look-up per level.  The state is the
+// transform (identity, transpose, anti-transpose, half-turn) that maps the
+// current sub-square onto the canonical one; these four form the Klein group,
+// encoded so that composition is XOR.  In the canonical square the quadrants
+// (x,y) = (0,0), (0,1), (1,1), (1,0) get digits 0, 1, 2, 3, and the sub-squares
+// (0,0) and (1,0) are entered transposed and anti-transposed (the recursion of
+// Hilbert's construction).
+namespace {
+constexpr std::array<std::uint8_t, 16> kHilbert2 = [] {
+  std::array<std::uint8_t, 16> t{};
+  for (int m = 0; m < 4; ++m)
+    for (int bx = 0; bx < 2; ++bx)
+      for (int by = 0; by < 2; ++by) {
+        int rx = bx, ry = by;
+        if (((m >> 1) ^ m) & 1) {  // transpose or anti-transpose: swap
+          const int tmp = rx;
+          rx = ry;
+          ry = tmp;
+        }
+        if (m & 2) rx ^= 1, ry ^= 1;  // anti-transpose or half-turn: reflect
+        const int digit = (rx << 1) | (rx ^ ry);
+        const int sub = (rx == 0 && ry == 0) ? 1 : (rx == 1 && ry == 0) ? 2 : 0;
+        t[(m << 2) | (bx << 1) | by] = static_cast<std::uint8_t>((digit << 2) | (m ^ sub));
+      }
+  return t;
+}();
+}  // namespace
+
 std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
+  if (n == 2) {
+    std::uint64_t key = 0;
+    unsigned m = 0;
+    for (int b = bits - 1; b >= 0; --b) {
+      const unsigned e = kHilbert2[(m << 2) | (((x[0] >> b) & 1u) << 1) | ((x[1] >> b) & 1u)];
+      key = (key << 2) | (e >> 2);
+      m = e & 3u;
+    }
+    return key;
+  }
   const std::uint32_t top = std::uint32_t(1) << (bits - 1);
   for (std::uint32_t q = top; q > 1; q >>= 1) {
     const std::uint32_t low = q - 1;

@@ -14,6 +14,14 @@ RunResult run_bowyer_watson_float(const PointSet&, const RunOptions&);
 RunResult run_bowyer_watson_mp(const PointSet&, const RunOptions&);
 RunResult run_bowyer_watson_epsilon(const PointSet&, const RunOptions&);
 RunResult run_bowyer_watson_integer(const PointSet&, const RunOptions&);
+RunResult run_george_integer(const PointSet&, const RunOptions&);
+RunResult run_george_adaptive(const PointSet&, const RunOptions&);
+RunResult run_george_mp(const PointSet&, const RunOptions&);
+RunResult run_lawson_adaptive(const PointSet&, const RunOptions&);
+RunResult run_lawson_float(const PointSet&, const RunOptions&);
+RunResult run_lawson_mp(const PointSet&, const RunOptions&);
+RunResult run_lawson_epsilon(const PointSet&, const RunOptions&);
+RunResult run_lawson_integer(const PointSet&, const RunOptions&);
 
 namespace {
 
@@ -29,10 +37,18 @@ const Entry kEntries[] = {
     {"bowyer-watson", "mp", &run_bowyer_watson_mp},
     {"bowyer-watson", "float", &run_bowyer_watson_float},
     {"bowyer-watson", "epsilon", &run_bowyer_watson_epsilon},
+    {"george", "integer", &run_george_integer},
+    {"george", "adaptive", &run_george_adaptive},
+    {"george", "mp", &run_george_mp},
+    {"lawson", "adaptive", &run_lawson_adaptive},
+    {"lawson", "integer", &run_lawson_integer},
+    {"lawson", "mp", &run_lawson_mp},
+    {"lawson", "float", &run_lawson_float},
+    {"lawson", "epsilon", &run_lawson_epsilon},
 };
 
 const char* const kKernels[] = {"adaptive", "integer", "mp", "float", "epsilon"};
-const char* const kAlgorithms[] = {"bowyer-watson", "lawson", "tanemura", "george"};
+const char* const kAlgorithms[] = {"bowyer-watson", "lawson", "george"};
 
 template <int D>
 void check_points(const std::vector<Point<D>>& pts) {
@@ -54,7 +70,7 @@ RunResult run(const PointSet& points, const RunOptions& options) {
   const auto kernels = kernel_names();
   if (std::find(algos.begin(), algos.end(), options.algorithm) == algos.end())
     throw UsageError("unknown algorithm '" + options.algorithm +
-                     "' (expected bowyer-watson, lawson, tanemura or george)");
+                     "' (expected bowyer-watson, lawson or george)");
   if (std::find(kernels.begin(), kernels.end(), options.kernel) == kernels.end())
     throw UsageError("unknown kernel '" + options.kernel +
                      "' (expected adaptive, integer, mp, float or epsilon)");

@@ -21,11 +21,13 @@ struct PointSet {
 };
 
 struct RunOptions {
-  std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | tanemura | george
+  std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | george (tanemura: not landed yet)
   std::string kernel = "adaptive";          // adaptive | integer | mp | float | epsilon
   std::string policy = "sos";               // sos | strict
   std::string order = "brio";               // input | random | brio | hilbert
   std::uint64_t seed = 0;
+  bool exact_sphere = false;   // george: exact circumsphere test (default: stored floating spheres)
+  bool enclosing_box = false;  // george: the paper's enclosing box instead of the ghost vertex
 };
 
 // Thrown for an unknown algorithm / kernel / policy / order name, or a
@@ -54,7 +56,7 @@ struct RunResult {
   std::size_t distinct_points = 0;
   double seconds = 0;        // triangulating only
   Counters counters;         // algorithm counters: "walk_steps", "cavity_simplices", "flips_2_3", ...
-  Counters predicates;       // "orient2d", "orient2d_stage_A", ... calls per predicate and stage
+  Counters predicates;       // "orient2d", "orient2d.A", ... calls per predicate and per stage answered
   Counters snapping;         // integer kernel: "points_moved", "points_merged", ...; empty otherwise
   double max_snap_displacement = 0;
 };

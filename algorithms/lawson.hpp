@@ -1,0 +1,409 @@
+// Incremental Delaunay triangulation by flips, 2D and 3D
+// (C. L. Lawson, "Software for C1 surface interpolation", 1977 -- survey
+// section 2.1; Baker, Handbook of Grid Generation ch. 16.2.4; B. Joe,
+// "Construction of three-dimensional Delaunay triangulations using local
+// transformations", CAGD 8 (1991); Edelsbrunner & Shah, "Incremental
+// topological flipping works for regular triangulations", Algorithmica 15
+// (1996), which covers the perturbed, i.e. regular, setting used here).
+//
+// For each point p, in the order given:
+//   1. locate by the visibility walk (algorithms/locate.hpp), then split the
+//      simplex found by the number of facets p lies on (orientation is never
+//      perturbed, so these cases remain under `sos`):
+//        2D: 1->3 (inside, or in a ghost triangle: outside the hull),
+//            2->4 (on an edge, a hull edge included), duplicate (on a vertex);
+//        3D: 1->4, 2->6 (on a facet), n->2n (on an edge: every tetrahedron of
+//            the edge's ring, ghosts included), duplicate;
+//   2. flip: a stack of the simplices holding p; the facet opposite p is
+//      tested with the Bowyer-Watson conflict rule (flips.hpp), so the fixed
+//      point is the same (perturbed) Delaunay triangulation; a facet that
+//      fails and cannot be flipped yet (3D) is kept aside and retried when the
+//      stack is empty (Edelsbrunner-Shah: another flip removes it).
+// Every loop is bounded: the walk by its step bound, the flips by
+// 64 n log2 n (inexact kernels) or n^2 (exact ones, where the flips provably
+// end), the retry rounds by the flip bound.  An exceeded bound, a flip that
+// finds an inconsistent mesh or a stuck insertion ends the run with
+// Outcome::failed.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "algorithms/cavity.hpp"
+#include "algorithms/flips.hpp"
+#include "algorithms/initial_simplex.hpp"
+#include "algorithms/locate.hpp"
+#include "algorithms/mesh.hpp"
+#include "algorithms/oriented.hpp"
+#include "algorithms/triangulation_result.hpp"
+
+namespace dlab {
+
+// Flip budget of a run of n insertions (or of flipping n vertices).
+inline std::uint64_t flip_bound(std::size_t n, bool exact) {
+  const double nn = static_cast<double>(n) + 2;
+  const double inexact = 64.0 * nn * std::log2(nn) + 4096;
+  return static_cast<std::uint64_t>(exact ? std::max(inexact, nn * nn) : inexact);
+}
+
+template <class K, int D>
+class Lawson {
+  static_assert(KernelFor<K, D>);
+  static constexpr int V = D + 1;
+  using Simplex = typename Mesh<D>::Simplex;
+
+ public:
+  explicit Lawson(const K& k = K{}) : k_(k), flipper_(k_, mesh_) {}
+  Lawson(const Lawson&) = delete;
+  Lawson& operator=(const Lawson&) = delete;
+
+  TriangulationResult run(std::span<const Point<D>> pts);
+
+  const Mesh<D>& mesh() const { return mesh_; }
+  const K& kernel() const { return k_; }
+
+ private:
+  bool insert(std::uint32_t i);
+  bool restore(std::uint32_t i);
+  bool cavity_insert(std::uint32_t i, std::uint32_t start);  // 3D, at the hull  // flips until every facet opposite i is locally Delaunay
+  bool split(const std::uint32_t* old, int n_old, const std::uint32_t* carrier, int n_carrier, std::uint32_t i,
+             std::uint64_t& counter);
+  void fail(std::string msg) { message_ = std::move(msg); }
+
+  K k_;
+  Mesh<D> mesh_;
+  Flipper<K, D> flipper_;
+  FlipMesh<D> fm_;
+  const Point<D>* pts_ = nullptr;
+  std::vector<std::uint32_t> merged_, stack_, aside_, ring_, created_;
+  std::vector<Simplex> news_;
+  Restar<D> restar_;
+  std::vector<std::uint32_t> cavity_;
+  std::vector<BoundaryRecord<D>> records_;
+  std::uint32_t stamp_ = 0;
+  std::uint64_t ins_hull_ = 0;
+  std::uint32_t last_ = 0;
+  std::uint64_t flip_budget_ = 0;
+  WalkRng rng_;
+  std::string message_;
+  std::uint64_t walk_steps_ = 0, duplicates_ = 0, ins_1_ = 0, ins_2_ = 0, ins_n_ = 0, retries_ = 0;
+};
+
+// Replaces `old` by the star of p: in every old simplex, p substituted for
+// each vertex of p's carrier (the simplex p is inside, the facet or edge p
+// lies on; for a point outside the hull, the ghost simplex whose hull facet
+// it sees, ghost vertex included).
+template <class K, int D>
+bool Lawson<K, D>::split(const std::uint32_t* old, int n_old, const std::uint32_t* carrier, int n_carrier,
+                         std::uint32_t i, std::uint64_t& counter) {
+  news_.clear();
+  for (int a = 0; a < n_old; ++a)
+    for (int j = 0; j < V; ++j) {
+      const std::uint32_t w = mesh_.vertex(old[a], j);
+      if (std::find(carrier, carrier + n_carrier, w) == carrier + n_carrier) continue;
+      news_.push_back(FlipMesh<D>::substitute(mesh_, old[a], j, i));
+      if constexpr (!K::exact) {
+        const Simplex& v = news_.back();
+        if (v[D] != kGhost) {
+          Sign o;
+          if constexpr (D == 2)
+            o = orient_pos(k_, pts_[v[0]], pts_[v[1]], pts_[v[2]]);
+          else
+            o = orient_pos(k_, pts_[v[0]], pts_[v[1]], pts_[v[2]], pts_[v[3]]);
+          if (o != Sign::positive) {
+            fail("point " + std::to_string(i) + ": a simplex of its star is not positively oriented");
+            return false;
+          }
+        }
+      }
+    }
+  if (!fm_.replace(mesh_, old, n_old, news_.data(), static_cast<int>(news_.size()), created_)) {
+    fail("point " + std::to_string(i) + ": the split left a facet unmatched");
+    return false;
+  }
+  ++counter;
+  return true;
+}
+
+template <class K, int D>
+bool Lawson<K, D>::insert(std::uint32_t i) {
+  const Point<D>& p = pts_[i];
+  const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
+  const Located loc = visibility_walk<K, D>(k_, mesh_, pts_, last_, p, bound, rng_);
+  walk_steps_ += loc.steps;
+  if (loc.end == Located::End::step_bound) {
+    fail("point location exceeded its bound of " + std::to_string(bound) + " steps at point " +
+         std::to_string(i) + (K::exact ? " (a bug: the kernel is exact)" : " (inconsistent orientations)"));
+    return false;
+  }
+  const std::uint32_t s = loc.simplex;
+  if constexpr (D == 3) {
+    // At the hull (outside it, or on a hull facet or edge) the flips of ghost
+    // tetrahedra are not covered by Edelsbrunner-Shah (their theorem needs p
+    // inside the current hull; with a ghost vertex a flip can create an edge
+    // that exists already): those points are inserted by the Bowyer-Watson
+    // cavity instead, with the same conflict rule.
+    bool hull = loc.end == Located::End::outside;
+    for (int j = 0; j < V && !hull; ++j)
+      if (mesh_.is_ghost(Mesh<D>::simplex_of(mesh_.neighbour(s, j))) &&
+          orient_with<K, D>(k_, mesh_, pts_, s, j, p) == Sign::zero)
+        hull = true;
+    if (hull) {
+      if (loc.end == Located::End::inside) {
+        for (int j = 0; j < V; ++j)
+          if (pts_[mesh_.vertex(s, j)] == p) {
+            merged_[i] = mesh_.vertex(s, j);
+            ++duplicates_;
+            last_ = s;
+            return true;
+          }
+      }
+      if (!cavity_insert(i, s)) return false;
+      merged_[i] = i;
+      return true;
+    }
+  }
+  if (loc.end == Located::End::outside) {
+    // p strictly beyond the hull facet of ghost s: 1 -> D+1 split of the ghost.
+    const Simplex all = mesh_.simplex(s);
+    if (!split(&s, 1, all.data(), V, i, ins_1_)) return false;
+  } else {
+    int zeros[V], nz = 0;
+    for (int j = 0; j < V; ++j)
+      if (orient_with<K, D>(k_, mesh_, pts_, s, j, p) == Sign::zero) zeros[nz++] = j;
+    if (nz >= D) {  // on a vertex: a duplicate
+      for (int j = 0; j < V; ++j) {
+        const std::uint32_t w = mesh_.vertex(s, j);
+        if (pts_[w] == p) {
+          merged_[i] = w;
+          ++duplicates_;
+          last_ = s;
+          return true;
+        }
+      }
+      fail("point " + std::to_string(i) + " lies on " + std::to_string(nz) +
+           " facet hyperplanes of a simplex but on none of its vertices (inconsistent orientations)");
+      return false;
+    }
+    if (nz == 0) {
+      const Simplex all = mesh_.simplex(s);
+      if (!split(&s, 1, all.data(), V, i, ins_1_)) return false;
+    } else if (nz == 1) {  // on a facet: the simplex and its neighbour across it
+      const std::uint32_t old[2] = {s, Mesh<D>::simplex_of(mesh_.neighbour(s, zeros[0]))};
+      std::uint32_t facet[D];
+      int nf = 0;
+      for (int j = 0; j < V; ++j)
+        if (j != zeros[0]) facet[nf++] = mesh_.vertex(s, j);
+      if (!split(old, 2, facet, D, i, ins_2_)) return false;
+    } else {  // 3D, on an edge: the edge's ring
+      std::uint32_t e[2];
+      int ne = 0;
+      for (int j = 0; j < V; ++j)
+        if (j != zeros[0] && j != zeros[1]) e[ne++] = mesh_.vertex(s, j);
+      if (!FlipMesh<D>::edge_ring(mesh_, s, e[0], e[1], ring_, mesh_.slots())) {
+        fail("point " + std::to_string(i) + ": the ring of the edge it lies on is corrupt");
+        return false;
+      }
+      const std::vector<std::uint32_t> ring = ring_;
+      if (!split(ring.data(), static_cast<int>(ring.size()), e, 2, i, ins_n_)) return false;
+    }
+  }
+  merged_[i] = i;
+  last_ = created_.front();
+  return restore(i);
+}
+
+// Bowyer-Watson's cavity step (bowyer_watson.hpp), for 3D points at the hull.
+template <class K, int D>
+bool Lawson<K, D>::cavity_insert(std::uint32_t i, std::uint32_t start) {
+  if (stamp_ >= 0xFFFFFFF0u) {
+    for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
+    stamp_ = 0;
+  }
+  stamp_ += 2;
+  const std::uint32_t in = stamp_, out = stamp_ + 1;
+  cavity_.clear();
+  records_.clear();
+  mesh_.set_mark(start, in);
+  cavity_.push_back(start);
+  for (std::size_t c = 0; c < cavity_.size(); ++c) {  // each simplex enters once: bounded
+    const std::uint32_t s = cavity_[c];
+    for (int f = 0; f < V; ++f) {
+      const std::uint32_t enc = mesh_.neighbour(s, f);
+      const std::uint32_t t = Mesh<D>::simplex_of(enc);
+      const std::uint32_t m = mesh_.mark(t);
+      if (m == in) continue;
+      if (m != out) {
+        if (flipper_.conflict(t, i)) {
+          mesh_.set_mark(t, in);
+          cavity_.push_back(t);
+          continue;
+        }
+        mesh_.set_mark(t, out);
+      }
+      BoundaryRecord<D> r;
+      for (int j = 0; j < V; ++j) r.v[j] = mesh_.vertex(s, j);
+      r.v[f] = i;
+      r.outside = enc;
+      r.slot = f;
+      records_.push_back(r);
+    }
+  }
+  if constexpr (!K::exact) {
+    for (const BoundaryRecord<D>& r : records_) {
+      if (r.v[D] == kGhost) continue;
+      Sign o;
+      if constexpr (D == 2)
+        o = orient_pos(k_, pts_[r.v[0]], pts_[r.v[1]], pts_[r.v[2]]);
+      else
+        o = orient_pos(k_, pts_[r.v[0]], pts_[r.v[1]], pts_[r.v[2]], pts_[r.v[3]]);
+      if (o != Sign::positive) {
+        fail("cavity of point " + std::to_string(i) + " is not star-shaped");
+        return false;
+      }
+    }
+  }
+  std::string err;
+  const std::uint32_t first = restar_.star(mesh_, cavity_, records_, err);
+  if (!err.empty()) {
+    fail("point " + std::to_string(i) + ": " + err);
+    return false;
+  }
+  ++ins_hull_;
+  last_ = first;
+  return true;
+}
+
+template <class K, int D>
+bool Lawson<K, D>::restore(std::uint32_t i) {
+  using R = typename Flipper<K, D>::Result;
+  stack_.assign(created_.begin(), created_.end());
+  aside_.clear();
+  // Each round drains the stack (facets that cannot be flipped yet go aside),
+  // then re-tests the facets put aside; a round flips at least once or ends.
+  for (std::uint64_t round = 0;; ++round) {
+    bool flipped_any = false;
+    while (!stack_.empty()) {
+      const std::uint32_t s = stack_.back();
+      stack_.pop_back();
+      if (!mesh_.alive(s)) continue;
+      const int f = FlipMesh<D>::slot_of(mesh_, s, i);
+      if (f < 0) continue;  // the slot was reused by a simplex away from p
+      const R r = flipper_.try_flip(s, f);
+      if (r == R::delaunay) continue;
+      if (r == R::unflippable) {
+        aside_.push_back(s);
+        continue;
+      }
+      if (r == R::broken) {
+        fail("point " + std::to_string(i) + ": a flip found an inconsistent mesh");
+        return false;
+      }
+      flipped_any = true;
+      if (flipper_.counts.total() > flip_budget_) {
+        fail("flip count exceeded its bound of " + std::to_string(flip_budget_) + " at point " +
+             std::to_string(i) + (K::exact ? " (a bug: the kernel is exact)" : " (inconsistent predicates)"));
+        return false;
+      }
+      for (std::uint32_t c : flipper_.created()) stack_.push_back(c);
+      last_ = flipper_.created().front();
+    }
+    if (aside_.empty()) return true;
+    if (round > 0 && !flipped_any) {
+      if (std::getenv("DLAB_LAWSON_DEBUG"))
+        for (std::uint32_t s : aside_) {
+          std::fprintf(stderr, "aside %u ghost=%d:", s, int(mesh_.is_ghost(s)));
+          for (int j = 0; j < V; ++j) std::fprintf(stderr, " %d", int(mesh_.vertex(s, j)));
+          const int f = FlipMesh<D>::slot_of(mesh_, s, i);
+          const std::uint32_t enc = mesh_.neighbour(s, f);
+          std::fprintf(stderr, " | f=%d d=%d tghost=%d\n", f, int(mesh_.vertex(Mesh<D>::simplex_of(enc), Mesh<D>::facet_of(enc))), int(mesh_.is_ghost(Mesh<D>::simplex_of(enc))));
+        }
+      fail("point " + std::to_string(i) + ": flips are stuck (" + std::to_string(aside_.size()) +
+           " non-Delaunay facets, none flippable)" + (K::exact ? " (unexpected with an exact kernel)" : ""));
+      return false;
+    }
+    ++retries_;
+    stack_.swap(aside_);
+    aside_.clear();
+  }
+}
+
+template <class K, int D>
+TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
+  TriangulationResult res;
+  pts_ = pts.data();
+  flipper_.set_points(pts_);
+  const std::size_t n = pts.size();
+  merged_.assign(n, kNotProcessed);
+  mesh_.clear();
+  flip_budget_ = flip_bound(n, K::exact);
+
+  const InitialSimplex<D> init = find_initial_simplex<D>(k_, pts);
+  if (!init.found) {
+    res.outcome = RunResult::Outcome::lower_dimensional;
+    res.message = init.why;
+    if constexpr (!K::exact) {
+      if (find_initial_simplex<D>(MpKernel{}, pts).found) {
+        res.outcome = RunResult::Outcome::failed;
+        res.message = "the " + std::string(K::name) + " kernel sees the input as lower-dimensional (" +
+                      init.why + "), but it is not";
+      }
+    }
+    return res;
+  }
+  mesh_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
+  last_ = build_initial_mesh<D>(mesh_, init.ids);
+  for (std::uint32_t id : init.ids) merged_[id] = id;
+
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (merged_[i] != kNotProcessed) continue;
+    if (!insert(i)) {
+      res.outcome = RunResult::Outcome::failed;
+      res.message = message_;
+      break;
+    }
+    if (!mesh_.alive(last_)) last_ = created_.empty() ? 0 : created_.front();
+  }
+
+  if (res.outcome == RunResult::Outcome::ok) {
+    if constexpr (!K::exact) {
+      std::vector<bool> present(n, false);
+      mesh_.for_each_finite([&](std::uint32_t s) {
+        for (int j = 0; j < V; ++j) present[mesh_.vertex(s, j)] = true;
+      });
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (merged_[i] == i && !present[i]) {
+          res.outcome = RunResult::Outcome::failed;
+          res.message = "vertex " + std::to_string(i) + " was lost";
+          break;
+        }
+    }
+    res.simplices.reserve(mesh_.count_finite() * V);
+    mesh_.for_each_finite([&](std::uint32_t s) {
+      for (int j = 0; j < V; ++j) res.simplices.push_back(mesh_.vertex(s, j));
+    });
+  }
+  res.merged_into = merged_;
+  const FlipCounts& c = flipper_.counts;
+  if constexpr (D == 2) {
+    res.counters = {{"walk_steps", walk_steps_}, {"insert_1_3", ins_1_},   {"insert_2_4", ins_2_},
+                    {"flips_2_2", c.f22},        {"duplicates", duplicates_}};
+  } else {
+    res.counters = {{"walk_steps", walk_steps_}, {"insert_1_4", ins_1_}, {"insert_2_6", ins_2_},
+                    {"insert_n_2n", ins_n_},     {"insert_hull_cavity", ins_hull_},     {"flips_2_3", c.f23},   {"flips_3_2", c.f32},
+                    {"flips_4_4", c.f44},        {"duplicates", duplicates_}};
+  }
+  res.counters.push_back({"flips_total", c.total()});
+  res.counters.push_back({"unflippable_tests", c.unflippable});
+  res.counters.push_back({"retry_rounds", retries_});
+  res.counters.push_back({"mesh_slots", mesh_.slots()});
+  res.counters.push_back({"mesh_bytes_reserved", mesh_.bytes_reserved()});
+  return res;
+}
+
+}  // namespace dlab

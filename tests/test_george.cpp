@@ -1,0 +1,181 @@
+// George's corrected cavity (algorithms/george.hpp, George 1997 section 2.3)
+// through dlab::run(): the result is checked by the exact validator
+// (algorithms/validate, an mp-kernel check independent of the code under test).
+//   - floating sphere test (the default): ALWAYS a valid triangulation of the
+//     convex hull with every distinct point a vertex, on random, lattice
+//     (cocircular / cospherical ties), near-degenerate, near-duplicate, huge,
+//     tiny, collinear and coplanar inputs, for each orientation kernel;
+//   - the correction really runs: on inputs where the floating test is wrong
+//     the counters show corrections, and the result is still valid;
+//   - exact sphere test: valid AND Delaunay, with no correction at all;
+//   - the stored circumsphere (circumsphere_store.hpp) is the circumsphere;
+//   - enclosing box: no box corner in the output, nothing overlaps, every
+//     point kept; the hull loss is reported.
+// Identity with CGAL is in test_oracle_george.cpp.
+#include <rapidcheck/catch.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "algorithms/circumsphere_store.hpp"
+#include "algorithms/validate.hpp"
+#include "fuzz/generators.hpp"
+#include "predicates/mp_kernel.hpp"
+#include "variants/run.hpp"
+
+using namespace dlab;
+
+namespace {
+
+std::uint64_t counter(const RunResult& r, const std::string& name) {
+  for (const auto& [k, v] : r.counters)
+    if (k == name) return v;
+  FAIL("no counter " << name);
+  return 0;
+}
+
+RunResult george(const PointSet& ps, const std::string& kernel, bool exact_sphere = false, bool box = false,
+                 const std::string& order = "brio", std::uint64_t seed = 1) {
+  RunOptions o;
+  o.algorithm = "george";
+  o.kernel = kernel;
+  o.order = order;
+  o.seed = seed;
+  o.exact_sphere = exact_sphere;
+  o.enclosing_box = box;
+  return run(ps, o);
+}
+
+PointSet make_points(const std::string& name, int dim, std::size_t n, std::uint64_t seed) {
+  gen::GenOptions g;
+  g.name = name;
+  g.dim = dim;
+  g.n = n;
+  g.seed = seed;
+  if (name == "kettner-grid") g.side = 40;
+  return gen::generate(g);
+}
+
+const char* const kGenerators[] = {"uniform",   "clustered",       "lattice", "rotated-lattice",
+                                   "cocircular", "near-degenerate", "near-duplicates", "huge",
+                                   "tiny",      "collinear"};
+
+}  // namespace
+
+TEST_CASE("george: circumsphere_of gives the circumsphere", "[george]") {
+  const Point2 a{0, 0}, b{4, 0}, c{0, 2};
+  const auto s2 = circumsphere_of<2>({&a, &b, &c});
+  CHECK(s2.centre[0] == 2);
+  CHECK(s2.centre[1] == 1);
+  CHECK(s2.r2 == 5);
+  const Point3 p{0, 0, 0}, q{2, 0, 0}, r{0, 4, 0}, t{0, 0, 6};
+  const auto s3 = circumsphere_of<3>({&p, &q, &r, &t});
+  CHECK(s3.centre == Point3{1, 2, 3});
+  CHECK(s3.r2 == 14);
+  CircumsphereStore<3> st;
+  st.set(5, {&p, &q, &r, &t});
+  CHECK(st.inside(5, Point3{1, 2, 3}));
+  CHECK(st.inside(5, Point3{1, 2, 3 + 3.74}));        // 3.74 < sqrt(14) = 3.7417
+  CHECK_FALSE(st.inside(5, Point3{1, 2, 3 + 3.75}));  // 3.75 > sqrt(14)
+}
+
+TEST_CASE("george: floating sphere test, always valid on every generator", "[george]") {
+  for (const std::string kernel : {"integer", "adaptive"})
+    for (int dim : {2, 3})
+      for (const char* name : kGenerators) {
+        const PointSet ps = make_points(name, dim, dim == 2 ? 1500 : 600, 7);
+        const RunResult r = george(ps, kernel);
+        INFO(kernel << " " << dim << "D " << name << ": " << r.message);
+        REQUIRE(r.outcome == RunResult::Outcome::ok);
+        const ValidationReport rep = validate(r.points, r.simplices);
+        INFO(rep.summary());
+        CHECK(rep.valid());
+        CHECK(counter(r, "valid") == 1);
+        CHECK(counter(r, "non_delaunay_facets") == rep.non_delaunay_facets());
+      }
+}
+
+TEST_CASE("george: coplanar and kettner inputs stay valid", "[george]") {
+  for (const std::string kernel : {"integer", "mp"}) {
+    const RunResult r3 = george(make_points("coplanar", 3, 500, 3), kernel);
+    REQUIRE(r3.outcome == RunResult::Outcome::ok);
+    CHECK(validate(r3.points, r3.simplices).valid());
+    const RunResult r2 = george(make_points("kettner-grid", 2, 0, 0), kernel);
+    REQUIRE(r2.outcome == RunResult::Outcome::ok);
+    CHECK(validate(r2.points, r2.simplices).valid());
+  }
+}
+
+TEST_CASE("george: the correction runs where the floating test errs, and repairs", "[george]") {
+  // 3D lattices are full of cospherical ties: the floating test gets many
+  // wrong, so cavities must be corrected (counters), and the mesh stays valid.
+  const RunResult r = george(make_points("lattice", 3, 1000, 1), "integer");
+  REQUIRE(r.outcome == RunResult::Outcome::ok);
+  CHECK(counter(r, "corrected_insertions") > 0);
+  CHECK(counter(r, "removed_for_visibility") + counter(r, "removed_for_connectivity") +
+            counter(r, "added_for_zero_volume") + counter(r, "removed_for_enclosed_vertex") >
+        0);
+  CHECK(validate(r.points, r.simplices).valid());
+}
+
+TEST_CASE("george: exact sphere test gives a Delaunay triangulation with no correction", "[george]") {
+  for (const std::string kernel : {"integer", "adaptive", "mp"})
+    for (int dim : {2, 3})
+      for (const char* name : kGenerators) {
+        const PointSet ps = make_points(name, dim, dim == 2 ? 800 : 300, 11);
+        const RunResult r = george(ps, kernel, true);
+        INFO(kernel << " " << dim << "D " << name << ": " << r.message);
+        REQUIRE(r.outcome == RunResult::Outcome::ok);
+        const ValidationReport rep = validate(r.points, r.simplices);
+        INFO(rep.summary());
+        CHECK(rep.delaunay());
+        CHECK(counter(r, "corrected_insertions") == 0);
+      }
+}
+
+TEST_CASE("george: property, small integer grids (heavy ties) are always valid", "[george]") {
+  rc::prop("2D and 3D, floating and exact sphere", [](bool three, bool exact, std::uint8_t nraw) {
+    const std::size_t n = 5 + nraw % 60;
+    PointSet ps;
+    ps.dimension = three ? 3 : 2;
+    const int range = *rc::gen::inRange(2, 7);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (three)
+        ps.p3.push_back({double(*rc::gen::inRange(0, range)), double(*rc::gen::inRange(0, range)),
+                         double(*rc::gen::inRange(0, range))});
+      else
+        ps.p2.push_back({double(*rc::gen::inRange(0, range)), double(*rc::gen::inRange(0, range))});
+    }
+    const RunResult r = george(ps, "integer", exact, false, "random", n);
+    if (r.outcome == RunResult::Outcome::lower_dimensional) return;
+    RC_ASSERT(r.outcome == RunResult::Outcome::ok);
+    const ValidationReport rep = validate(r.points, r.simplices);
+    RC_ASSERT(rep.valid());
+    if (exact) RC_ASSERT(rep.delaunay());
+  });
+}
+
+TEST_CASE("george: enclosing box, box removed, nothing overlaps, loss reported", "[george]") {
+  for (int dim : {2, 3}) {
+    const PointSet ps = make_points("uniform", dim, 400, 5);
+    const RunResult r = george(ps, "adaptive", false, true);
+    REQUIRE(r.outcome == RunResult::Outcome::ok);
+    for (std::uint32_t v : r.simplices) REQUIRE(v < ps.size());
+    const ValidationReport rep = validate(r.points, r.simplices);
+    CHECK(rep[Check::orientation].count == 0);
+    CHECK(rep[Check::non_manifold_facet].count == 0);
+    CHECK(rep[Check::facet_same_side].count == 0);
+    CHECK(rep[Check::missing_vertex].count == counter(r, "missing_vertices"));
+    CHECK(counter(r, "box_simplices_removed") > 0);
+    // Uniform points: some hull facets are always lost with the box's elements.
+    CHECK(counter(r, "hull_facets_missing") > 0);
+    CHECK(counter(r, "valid") == (rep.valid() ? 1u : 0u));
+  }
+  RunOptions o;
+  o.algorithm = "george";
+  o.kernel = "integer";
+  o.enclosing_box = true;
+  CHECK_THROWS_AS(run(make_points("uniform", 2, 10, 1), o), UsageError);
+}

@@ -1,0 +1,12 @@
+// Lawson (flips) x `epsilon` kernel: one translation unit per algorithm x kernel.
+#include "algorithms/lawson.hpp"
+#include "predicates/epsilon_kernel.hpp"
+#include "variants/driver.hpp"
+
+namespace dlab {
+
+RunResult run_lawson_epsilon(const PointSet& points, const RunOptions& options) {
+  return run_algorithm<Lawson, EpsilonKernel>(points, options);
+}
+
+}  // namespace dlab
