@@ -444,10 +444,11 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   mesh_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
   spheres_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
   if (opt_.enclosing_box) {
-    const auto corners = enclosing_box_corners<D>(pts);
-    if (!corners) {
+    auto corners = enclosing_box_corners<D>(pts);
+    if (!corners || !snap_box_corners<K, D>(k_, pts, *corners)) {
       res.outcome = RunResult::Outcome::failed;
-      res.message = "the enclosing box does not fit in finite doubles";
+      res.message = corners ? "the enclosing box's corners are not strictly outside the points on the kernel's grid"
+                            : "the enclosing box does not fit in finite doubles";
       return res;
     }
     box_pts_.assign(pts.begin(), pts.end());

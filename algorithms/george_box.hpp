@@ -9,16 +9,18 @@
 //
 // The box is the bounding box grown by its largest side on every side, so every
 // input point is strictly inside it.  Its corners must be exact doubles seen
-// exactly by the kernel: fine for adaptive and mp, not for the integer kernel
-// (its grid is fitted to the input and clamps anything outside), which the
-// registry refuses.
+// exactly by the kernel. With the integer kernel (George's own choice) they
+// must be grid points: the driver fits the grid to the input and its box
+// (variants/driver.hpp), and `snap_box_corners` moves the corners onto it.
 #pragma once
 #include <algorithm>
+#include <concepts>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/mesh.hpp"
@@ -53,6 +55,30 @@ std::optional<std::vector<Point<D>>> enclosing_box_corners(std::span<const Point
   for (int j = 0; j < D; ++j)
     if (!(c[0][j] < lo[j]) || !(c[c.size() - 1][j] > hi[j])) return std::nullopt;
   return c;
+}
+
+// The kernel's snapping function, looked up through the combinators
+// (counted<perturbed<IntegerKernel>>: member `base`); identity if none.
+template <class K, int D>
+Point<D> snap_point(const K& k, const Point<D>& p) {
+  if constexpr (requires { { k.snap(p) } -> std::same_as<Point<D>>; })
+    return k.snap(p);
+  else if constexpr (requires { k.base; })
+    return snap_point<std::remove_cvref_t<decltype(k.base)>, D>(k.base, p);
+  else
+    return p;
+}
+
+// Corners on the kernel's grid, still strictly outside the points' bounding
+// box (false if snapping pulled one onto or inside it). Snapping acts per
+// coordinate, so the corners still span an axis-aligned box.
+template <class K, int D>
+bool snap_box_corners(const K& k, std::span<const Point<D>> pts, std::vector<Point<D>>& corners) {
+  for (Point<D>& c : corners) c = snap_point<K, D>(k, c);
+  for (const Point<D>& p : pts)
+    for (int j = 0; j < D; ++j)
+      if (!(corners.front()[j] < p[j]) || !(corners.back()[j] > p[j])) return false;
+  return true;
 }
 
 // Builds the box triangulation on corner ids first + b (b = 0 .. 2^D - 1):

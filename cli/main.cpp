@@ -20,7 +20,7 @@ const char* const kUsage =
     "  dlab flip INPUT SIMPLICES [-o OUT]  flip a triangulation toward Delaunay (exit 1 if stuck)\n"
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
-    "A: bowyer-watson (default), lawson, george. K: adaptive (default), integer, mp,\n"
+    "A: bowyer-watson (default), lawson, tanemura, george. K: adaptive (default), integer, mp,\n"
     "float, epsilon. INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), or a\n"
     "Triangle/TetGen .node file; '-' is standard input.\n"
     "Exit status: 0 success, 1 the algorithm failed or its result is invalid, 2 bad input or usage.\n";

@@ -23,6 +23,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "algorithms/george_box.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/counted.hpp"
 #include "predicates/kernel.hpp"
@@ -92,6 +93,14 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
   pts = input;
   K base{};
   if constexpr (SnappingKernel<K, D>) {
+    // George's enclosing box (algorithms/george_box.hpp): the grid is fitted to
+    // the input and its box corners together, so that the corners are on it.
+    if (o.enclosing_box && !pts.empty())
+      if (auto corners = enclosing_box_corners<D>(std::span<const Point<D>>(pts))) {
+        std::vector<Point<D>> fit = pts;
+        fit.insert(fit.end(), corners->begin(), corners->end());
+        base.snap_all(fit);  // fits the grid (the input itself is snapped below)
+      }
     const auto st = base.snap_all(pts);
     r.snapping = {{"points_moved", st.moved}, {"points_merged", st.merged}};
     r.max_snap_displacement = st.max_displacement;

@@ -111,10 +111,6 @@ std::uint64_t missing_ppm(const std::vector<Point<D>>& p, std::span<const std::u
 
 template <class K>
 RunResult run_george(const PointSet& points, const RunOptions& o) {
-  if (o.enclosing_box && K::name == std::string_view("integer"))
-    throw UsageError(
-        "--enclosing-box needs a kernel that sees points outside the input's bounding box "
-        "(adaptive or mp): the integer kernel's grid is fitted to the input and clamps the box corners");
   RunResult r;
   if (o.enclosing_box)
     r = o.exact_sphere ? run_algorithm<GeorgeBoxExactSphere, K>(points, o) : run_algorithm<GeorgeBox, K>(points, o);

@@ -22,6 +22,11 @@ RunResult run_lawson_float(const PointSet&, const RunOptions&);
 RunResult run_lawson_mp(const PointSet&, const RunOptions&);
 RunResult run_lawson_epsilon(const PointSet&, const RunOptions&);
 RunResult run_lawson_integer(const PointSet&, const RunOptions&);
+RunResult run_tanemura_adaptive(const PointSet&, const RunOptions&);
+RunResult run_tanemura_integer(const PointSet&, const RunOptions&);
+RunResult run_tanemura_mp(const PointSet&, const RunOptions&);
+RunResult run_tanemura_float(const PointSet&, const RunOptions&);
+RunResult run_tanemura_epsilon(const PointSet&, const RunOptions&);
 
 namespace {
 
@@ -45,10 +50,15 @@ const Entry kEntries[] = {
     {"lawson", "mp", &run_lawson_mp},
     {"lawson", "float", &run_lawson_float},
     {"lawson", "epsilon", &run_lawson_epsilon},
+    {"tanemura", "adaptive", &run_tanemura_adaptive},
+    {"tanemura", "integer", &run_tanemura_integer},
+    {"tanemura", "mp", &run_tanemura_mp},
+    {"tanemura", "float", &run_tanemura_float},
+    {"tanemura", "epsilon", &run_tanemura_epsilon},
 };
 
 const char* const kKernels[] = {"adaptive", "integer", "mp", "float", "epsilon"};
-const char* const kAlgorithms[] = {"bowyer-watson", "lawson", "george"};
+const char* const kAlgorithms[] = {"bowyer-watson", "lawson", "tanemura", "george"};
 
 template <int D>
 void check_points(const std::vector<Point<D>>& pts) {
@@ -70,10 +80,12 @@ RunResult run(const PointSet& points, const RunOptions& options) {
   const auto kernels = kernel_names();
   if (std::find(algos.begin(), algos.end(), options.algorithm) == algos.end())
     throw UsageError("unknown algorithm '" + options.algorithm +
-                     "' (expected bowyer-watson, lawson or george)");
+                     "' (expected bowyer-watson, lawson, tanemura or george)");
   if (std::find(kernels.begin(), kernels.end(), options.kernel) == kernels.end())
     throw UsageError("unknown kernel '" + options.kernel +
                      "' (expected adaptive, integer, mp, float or epsilon)");
+  if ((options.exact_sphere || options.enclosing_box) && options.algorithm != "george")
+    throw UsageError("--exact-sphere and --enclosing-box are options of --algo george only");
   if (points.dimension == 2)
     check_points<2>(points.p2);
   else if (points.dimension == 3)

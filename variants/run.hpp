@@ -21,7 +21,7 @@ struct PointSet {
 };
 
 struct RunOptions {
-  std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | george (tanemura: not landed yet)
+  std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | tanemura | george
   std::string kernel = "adaptive";          // adaptive | integer | mp | float | epsilon
   std::string policy = "sos";               // sos | strict
   std::string order = "brio";               // input | random | brio | hilbert

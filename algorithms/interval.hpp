@@ -1,0 +1,110 @@
+// A minimal interval arithmetic on doubles, used ONLY to prune search regions
+// (algorithms/bucket_grid.hpp, algorithms/tanemura.hpp) and to filter the exact
+// start-up computations (algorithms/tanemura_start.cpp) — never to decide a
+// predicate.
+//
+// Soundness: with IEEE round-to-nearest, the rounded result of +, -, *, /,
+// sqrt is within half an ulp of the exact one, so widening each rounded
+// endpoint by one ulp outwards (std::nextafter) encloses the exact result
+// (also for subnormal results: the spacing there is the smallest subnormal,
+// and the rounding error is at most half of it). Overflow gives an infinite
+// endpoint; inf - inf gives NaN: `bounded()` is then false and callers give up
+// pruning (scan more), which is always safe.
+#pragma once
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cmath>
+#include <limits>
+
+namespace dlab {
+
+struct Iv {
+  double lo = 0, hi = 0;
+
+  // std::nextafter(x, -inf) / (x, +inf), inline (the libm call dominated the
+  // search's profile): one step of the bit pattern away from / towards zero.
+  static double down(double x) {
+    if (!(x > -std::numeric_limits<double>::infinity())) return x;  // -inf, NaN
+    if (x == 0) return -std::numeric_limits<double>::denorm_min();
+    const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(x > 0 ? b - 1 : b + 1);
+  }
+  static double up(double x) {
+    if (!(x < std::numeric_limits<double>::infinity())) return x;  // +inf, NaN
+    if (x == 0) return std::numeric_limits<double>::denorm_min();
+    const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(x > 0 ? b + 1 : b - 1);
+  }
+
+  // Rounded results that are exact need no widening, so exact data (lattices,
+  // axis-aligned facets) keep point intervals and prune exactly. Exactness is
+  // decided by error-free transformations (Shewchuk 1997 section 2: Knuth's
+  // Two-Sum; Dekker's Two-Product with Veltkamp's split), each valid in the
+  // range checked here; outside it the result counts as inexact (widened).
+  static bool sum_is_exact(double a, double b, double s) {  // s = fl(a + b)
+    const double bv = s - a;
+    return ((a - (s - bv)) + (b - bv)) == 0;  // NaN (overflow) compares false
+  }
+  static bool product_is_exact(double a, double b, double p) {  // p = fl(a * b)
+    if ((a == 0 && std::isfinite(b)) || (b == 0 && std::isfinite(a))) return true;
+    const double fa = std::fabs(a), fb = std::fabs(b), fp = std::fabs(p);
+    // No overflow in the split (|x| < 2^995) and no underflow in the partial
+    // products (|p| >= 2^-960 keeps al * bl, about 2^-54 |p|, normal).
+    if (!(fa < 0x1p+995 && fb < 0x1p+995 && fp >= 0x1p-960 && fp < 0x1p+1000)) return false;
+    const auto split = [](double x, double& hi, double& lo) {
+      const double c = 134217729.0 * x;  // 2^27 + 1
+      hi = c - (c - x);
+      lo = x - hi;
+    };
+    double ah, al, bh, bl;
+    split(a, ah, al);
+    split(b, bh, bl);
+    return (((ah * bh - p) + ah * bl + al * bh) + al * bl) == 0;
+  }
+  // Point-interval operations that stay points when exact (else widened).
+  friend Iv tight_sub(Iv a, Iv b) {
+    if (a.lo != a.hi || b.lo != b.hi) return a - b;
+    const double s = a.lo - b.lo;
+    return sum_is_exact(a.lo, -b.lo, s) ? Iv{s, s} : Iv{down(s), up(s)};
+  }
+  friend Iv tight_mul(Iv a, Iv b) {
+    if (a.lo != a.hi || b.lo != b.hi) return a * b;
+    const double p = a.lo * b.lo;
+    return product_is_exact(a.lo, b.lo, p) ? Iv{p, p} : Iv{down(p), up(p)};
+  }
+
+  static Iv exact(double x) { return {x, x}; }
+  bool bounded() const { return std::isfinite(lo) && std::isfinite(hi) && lo <= hi; }
+  bool contains_zero() const { return !(lo > 0) && !(hi < 0); }  // also true for NaN
+
+  friend Iv operator+(Iv a, Iv b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
+  friend Iv operator-(Iv a, Iv b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }
+  friend Iv operator*(Iv a, Iv b) {
+    const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4))
+      return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    return {down(std::min(std::min(p1, p2), std::min(p3, p4))),
+            up(std::max(std::max(p1, p2), std::max(p3, p4)))};
+  }
+  // Division by an interval that excludes zero (else NaN: unbounded).
+  friend Iv operator/(Iv a, Iv b) {
+    if (b.contains_zero())
+      return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    const double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo, p4 = a.hi / b.hi;
+    return {down(std::min(std::min(p1, p2), std::min(p3, p4))),
+            up(std::max(std::max(p1, p2), std::max(p3, p4)))};
+  }
+  // Square: non-negative enclosure.
+  friend Iv sq(Iv a) {
+    const double l = std::fabs(a.lo), h = std::fabs(a.hi);
+    const double big = std::max(l, h);
+    const double small = a.contains_zero() ? 0.0 : std::min(l, h);
+    return {small == 0 ? 0.0 : std::max(0.0, down(small * small)), up(big * big)};
+  }
+};
+
+// Upper bound of sqrt(x) for x >= 0 (sqrt is correctly rounded).
+inline double sqrt_up(double x) { return Iv::up(std::sqrt(std::max(0.0, x))); }
+
+}  // namespace dlab

@@ -1,0 +1,13 @@
+// Tanemura–Ogawa–Ogita x `integer` kernel: one translation unit per algorithm x
+// kernel (algorithms/tanemura.hpp; explicit instantiation keeps builds parallel).
+#include "algorithms/tanemura.hpp"
+#include "predicates/integer_kernel.hpp"
+#include "variants/driver.hpp"
+
+namespace dlab {
+
+RunResult run_tanemura_integer(const PointSet& points, const RunOptions& options) {
+  return run_algorithm<Tanemura, IntegerKernel>(points, options);
+}
+
+}  // namespace dlab
