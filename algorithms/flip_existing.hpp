@@ -34,6 +34,7 @@ struct FlipExistingResult {
   std::vector<std::uint32_t> simplices;  // the final triangulation (finite simplices)
   std::uint64_t flips = 0, passes = 0;
   std::uint64_t stuck_facets = 0;  // non-Delaunay facets left, none flippable (3D)
+  std::int64_t bad_simplex = -1;   // input simplex (0-based) that made it "not a triangulation", if one did
   Counters counters;
 };
 
@@ -76,7 +77,8 @@ std::string pair_facets(Mesh<D>& m, std::vector<FacetRec<D>>& fs, std::vector<Fa
 
 // Builds the ghost-closed mesh from finite simplices; "" or what is wrong.
 template <int D, class K>
-std::string build(const K& k, std::span<const Point<D>> pts, std::span<const std::uint32_t> flat, Mesh<D>& m) {
+std::string build(const K& k, std::span<const Point<D>> pts, std::span<const std::uint32_t> flat, Mesh<D>& m,
+                  std::int64_t& bad) {
   constexpr int V = D + 1;
   const std::size_t n = flat.size() / V;
   if (n == 0) return "no simplices";
@@ -87,14 +89,20 @@ std::string build(const K& k, std::span<const Point<D>> pts, std::span<const std
     std::array<std::uint32_t, V> v;
     for (int j = 0; j < V; ++j) {
       v[j] = flat[s * V + j];
-      if (v[j] >= pts.size()) return "simplex " + std::to_string(s) + ": index out of range";
+      if (v[j] >= pts.size()) {
+        bad = static_cast<std::int64_t>(s);
+        return "simplex " + std::to_string(s) + ": index out of range";
+      }
     }
     Sign o;
     if constexpr (D == 2)
       o = orient_pos(k, pts[v[0]], pts[v[1]], pts[v[2]]);
     else
       o = orient_pos(k, pts[v[0]], pts[v[1]], pts[v[2]], pts[v[3]]);
-    if (o != Sign::positive) return "simplex " + std::to_string(s) + " is not positively oriented";
+    if (o != Sign::positive) {
+      bad = static_cast<std::int64_t>(s);
+      return "simplex " + std::to_string(s) + (o == Sign::zero ? " is flat" : " is not positively oriented");
+    }
     const std::uint32_t id = m.create(v.data());
     for (int f = 0; f < V; ++f) facets.push_back(facet_rec<D>(v.data(), f, Mesh<D>::encode(id, f)));
   }
@@ -130,7 +138,7 @@ FlipExistingResult flip_existing(std::span<const Point<D>> pts, std::span<const 
   using R = typename Flipper<K, D>::Result;
   FlipExistingResult res;
   Mesh<D> m;
-  const std::string err = flip_existing_detail::build<D>(k, pts, simplices, m);
+  const std::string err = flip_existing_detail::build<D>(k, pts, simplices, m, res.bad_simplex);
   if (!err.empty()) {
     res.outcome = RunResult::Outcome::failed;
     res.message = "not a triangulation: " + err;
@@ -194,7 +202,10 @@ FlipExistingResult flip_existing(std::span<const Point<D>> pts, std::span<const 
   if constexpr (D == 2)
     res.counters = {{"flips_2_2", c.f22}};
   else
-    res.counters = {{"flips_2_3", c.f23}, {"flips_3_2", c.f32}, {"flips_4_4", c.f44}};
+    res.counters = {{"flips_2_3", c.f23},
+                    {"flips_3_2", c.f32},
+                    {"flips_4_4", c.f44},
+                    {"hull_edge_removals", c.hull_removals}};
   res.counters.push_back({"flips_total", c.total()});
   res.counters.push_back({"unflippable_tests", c.unflippable});
   res.counters.push_back({"passes", res.passes});

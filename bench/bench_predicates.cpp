@@ -8,9 +8,14 @@
 //               to doubles), the query point then moved by -1, 0 or +1 ulp in one
 //               coordinate: the exact stages decide most of these.
 // For the adaptive kernel, counters give the share of calls each stage answered.
+// --dlab_tight=PRED/KERNEL[/PASSES[/SET]] runs the same loop body without Google
+// Benchmark, in one function (tight_pass) for callgrind: see the comment there.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -102,21 +107,44 @@ std::vector<Call> make_inputs(Pred pred, Set set) {
 
 Point2 xy(const Point3& p) { return {p[0], p[1]}; }
 
-template <class K>
-int call(const K& k, Pred pred, const Call& c) {
-  switch (pred) {
-    case kOrient2d: return to_int(k.orient2d(xy(c[0]), xy(c[1]), xy(c[2])));
-    case kIncircle: return to_int(k.incircle(xy(c[0]), xy(c[1]), xy(c[2]), xy(c[3])));
-    case kOrient3d: return to_int(k.orient3d(c[0], c[1], c[2], c[3]));
-    case kInsphere: return to_int(k.insphere(c[0], c[1], c[2], c[3], c[4]));
-  }
-  return 0;
+// The calls of one (predicate, set): 2D predicates read stored Point2s (as an
+// algorithm reads its point array), 3D ones Point3s; no temporaries per call.
+struct Inputs {
+  std::vector<std::array<Point2, 4>> c2;
+  std::vector<Call> c3;
+};
+
+Inputs make_set(Pred pred, Set set) {
+  Inputs in;
+  in.c3 = make_inputs(pred, set);
+  for (const Call& c : in.c3) in.c2.push_back({xy(c[0]), xy(c[1]), xy(c[2]), xy(c[3])});
+  return in;
 }
 
-Staged staged(Pred pred, const Call& c) {
+// One call of predicate P on call i: the full sign, fresh inputs every call.
+template <Pred P, class K>
+inline int call(const K& k, const Inputs& in, std::size_t i) {
+  if constexpr (P == kOrient2d) {
+    const auto& c = in.c2[i];
+    return to_int(k.orient2d(c[0], c[1], c[2]));
+  } else if constexpr (P == kIncircle) {
+    const auto& c = in.c2[i];
+    return to_int(k.incircle(c[0], c[1], c[2], c[3]));
+  } else if constexpr (P == kOrient3d) {
+    const auto& c = in.c3[i];
+    return to_int(k.orient3d(c[0], c[1], c[2], c[3]));
+  } else {
+    const auto& c = in.c3[i];
+    return to_int(k.insphere(c[0], c[1], c[2], c[3], c[4]));
+  }
+}
+
+Staged staged(Pred pred, const Inputs& in, std::size_t i) {
+  const auto& d = in.c2[i];
+  const auto& c = in.c3[i];
   switch (pred) {
-    case kOrient2d: return AdaptiveKernel::orient2d_staged(xy(c[0]), xy(c[1]), xy(c[2]));
-    case kIncircle: return AdaptiveKernel::incircle_staged(xy(c[0]), xy(c[1]), xy(c[2]), xy(c[3]));
+    case kOrient2d: return AdaptiveKernel::orient2d_staged(d[0], d[1], d[2]);
+    case kIncircle: return AdaptiveKernel::incircle_staged(d[0], d[1], d[2], d[3]);
     case kOrient3d: return AdaptiveKernel::orient3d_staged(c[0], c[1], c[2], c[3]);
     case kInsphere: return AdaptiveKernel::insphere_staged(c[0], c[1], c[2], c[3], c[4]);
   }
@@ -124,25 +152,100 @@ Staged staged(Pred pred, const Call& c) {
 }
 
 // The switch on `pred` is outside the timed loop: one instantiation per predicate.
+// DoNotOptimize(acc) (an asm barrier with a memory clobber) after every call keeps
+// the compiler from hoisting, merging or vectorising calls across iterations, for
+// every kernel alike.
 template <class K, Pred P>
 void bench(benchmark::State& state, Set set) {
-  const std::vector<Call> calls = make_inputs(P, set);
+  const Inputs in = make_set(P, set);
   const K k{};
   std::size_t i = 0;
   int acc = 0;
   for (auto _ : state) {
-    acc += call(k, P, calls[i]);
+    acc += call<P>(k, in, i);
     i = (i + 1) & (kCalls - 1);
     benchmark::DoNotOptimize(acc);
   }
   if constexpr (std::is_same_v<K, AdaptiveKernel>) {
     std::array<int, 6> n{};
-    for (const Call& c : calls) ++n[staged(P, c).stage];
+    for (std::size_t j = 0; j < kCalls; ++j) ++n[staged(P, in, j).stage];
     for (std::size_t s = 0; s < n.size(); ++s)
       if (n[s] > 0)
         state.counters[std::string("stage_") + std::string(AdaptiveKernel::stage_names[s])] =
             static_cast<double>(n[s]) / kCalls;
   }
+}
+
+// ---- Tight loop (--dlab_tight=PRED/KERNEL[/PASSES]) -------------------------------
+// The same loop body as bench(), over all kCalls calls once, in a function of its
+// own so that callgrind can count its instructions exactly:
+//   valgrind --tool=callgrind --toggle-collect='*tight_pass*'
+//            bench_predicates --dlab_tight=orient3d/adaptive/20
+// (instructions per call = Ir / (PASSES * 4096)). Run alone, it prints the best
+// of PASSES timed passes in ns per call.
+template <class K, Pred P>
+[[gnu::noinline]] int tight_pass(const K& k, const Inputs& in) {
+  int acc = 0;
+  for (std::size_t i = 0; i < kCalls; ++i) {
+    acc += call<P>(k, in, i);
+    benchmark::DoNotOptimize(acc);
+  }
+  return acc;
+}
+
+template <class K, Pred P>
+int run_tight(Set set, int passes) {
+  const Inputs in = make_set(P, set);
+  const K k{};
+  long sum = 0;
+  double best = 1e300;
+  for (int p = 0; p < passes; ++p) {
+    const auto t0 = std::chrono::steady_clock::now();
+    sum += tight_pass<K, P>(k, in);
+    const auto t1 = std::chrono::steady_clock::now();
+    best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / kCalls);
+  }
+  std::printf("tight %s: best of %d passes %.3f ns/call (sum of signs %ld)\n",
+              std::string(K::name).c_str(), passes, best, sum);
+  return 0;
+}
+
+template <class K>
+int tight_kernel(Pred pred, Set set, int passes) {
+  switch (pred) {
+    case kOrient2d: return run_tight<K, kOrient2d>(set, passes);
+    case kIncircle: return run_tight<K, kIncircle>(set, passes);
+    case kOrient3d: return run_tight<K, kOrient3d>(set, passes);
+    case kInsphere: return run_tight<K, kInsphere>(set, passes);
+  }
+  return 1;
+}
+
+// spec = PRED/KERNEL[/PASSES[/SET]], e.g. orient3d/adaptive/200/random.
+int tight(const std::string& spec) {
+  std::vector<std::string> f;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t slash = spec.find('/', at);
+    f.push_back(spec.substr(at, slash - at));
+    if (slash == std::string::npos) break;
+    at = slash + 1;
+  }
+  const char* preds[] = {"orient2d", "incircle", "orient3d", "insphere"};
+  int pi = -1;
+  for (int j = 0; j < 4; ++j)
+    if (f[0] == preds[j]) pi = j;
+  const int passes = f.size() > 2 ? std::stoi(f[2]) : 200;
+  const Set set = (f.size() > 3 && f[3] == "degenerate") ? kDegenerate : kRandom;
+  if (pi < 0 || f.size() < 2 || passes < 1) {
+    std::fprintf(stderr, "bad --dlab_tight=%s\n", spec.c_str());
+    return 2;
+  }
+  const Pred pred = static_cast<Pred>(pi);
+  if (f[1] == "float") return tight_kernel<FloatKernel>(pred, set, passes);
+  if (f[1] == "adaptive") return tight_kernel<AdaptiveKernel>(pred, set, passes);
+  std::fprintf(stderr, "--dlab_tight: kernel must be float or adaptive\n");
+  return 2;
 }
 
 template <class K>
@@ -162,6 +265,10 @@ void register_kernel() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int j = 1; j < argc; ++j) {
+    const std::string a = argv[j];
+    if (a.rfind("--dlab_tight=", 0) == 0) return tight(a.substr(13));
+  }
   register_kernel<FloatKernel>();
   register_kernel<AdaptiveKernel>();
   register_kernel<MpKernel>();

@@ -1,11 +1,17 @@
 // dlab against CGAL on the same points in the same run (issue 3).
 // For each point set: CGAL Delaunay_triangulation_2/3 (Epick, range insertion
 // with CGAL's spatial sort) and dlab::run() for each requested kernel; prints
-// seconds, the ratio dlab/CGAL, and peak memory per point. Each measurement
-// runs in a forked child so its peak resident size is its own.
+// seconds, the ratio dlab/CGAL, and peak memory per point; also the CPU time of
+// each job and its ratio (steadier than wall time on a shared, loaded machine:
+// the CGAL job includes copying the points, dlab's its insertion order and
+// output). Each measurement runs in a forked child so its peak resident size
+// is its own.
 //
 // usage: dlab_bench_triangulation [--dim 2|3] [--n N] [--set uniform|grid]
 //                                 [--kernels adaptive,mp,...] [--algo A] [--repeat R]
+//                                 [--order brio|hilbert|random|input] [--cgal 0|1] [--stats 0|1]
+// --cgal 0 skips CGAL (for profiling dlab alone, e.g. under callgrind); --stats 1
+// prints dlab's algorithm and predicate counters (calls per predicate and stage).
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -15,6 +21,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -31,6 +38,7 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 struct Measure {
   double seconds = 0;
+  double cpu = 0;         // CPU seconds of the whole job (less sensitive to a loaded machine)
   double bytes = 0;       // resident growth during the run (peak - before)
   double simplices = 0;
   bool ok = true;
@@ -48,13 +56,18 @@ long resident_kib(const char* key) {
 // simplex count through a pipe.
 template <class Job>
 Measure in_child(Job job) {
+  std::fflush(stdout);  // else the child would print the parent's buffered lines again
   int fd[2];
   if (pipe(fd) != 0) std::abort();
   const pid_t pid = fork();
   if (pid == 0) {
     close(fd[0]);
     const long before = resident_kib("VmRSS:");
+    timespec c0{}, c1{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
     Measure m = job();
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+    m.cpu = double(c1.tv_sec - c0.tv_sec) + 1e-9 * double(c1.tv_nsec - c0.tv_nsec);
     m.bytes = double(resident_kib("VmHWM:") - before) * 1024.0;
     if (write(fd[1], &m, sizeof m) != sizeof m) _exit(3);
     _exit(0);
@@ -95,9 +108,16 @@ Measure cgal_run(const dlab::PointSet& ps) {
   return m;
 }
 
-Measure dlab_run(const dlab::PointSet& ps, const dlab::RunOptions& opt) {
+Measure dlab_run(const dlab::PointSet& ps, const dlab::RunOptions& opt, bool stats) {
   Measure m;
   const dlab::RunResult r = dlab::run(ps, opt);
+  if (stats) {
+    for (const auto& [key, value] : r.counters)
+      std::printf("  %-34s %14llu\n", key.c_str(), (unsigned long long)value);
+    for (const auto& [key, value] : r.predicates)
+      if (value != 0) std::printf("  %-34s %14llu\n", key.c_str(), (unsigned long long)value);
+    std::fflush(stdout);
+  }
   m.seconds = r.seconds;
   m.simplices = double(r.simplices.size() / std::size_t(ps.dimension + 1));
   m.ok = r.outcome == dlab::RunResult::Outcome::ok;
@@ -118,6 +138,8 @@ int main(int argc, char** argv) {
   std::size_t n = 100000;
   std::string set = "uniform", algo = "bowyer-watson", kernels = "adaptive";
   int repeat = 1;
+  std::string order = "brio";
+  bool with_cgal = true, stats = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--dim") dim = std::atoi(value.c_str());
@@ -126,12 +148,16 @@ int main(int argc, char** argv) {
     else if (key == "--algo") algo = value;
     else if (key == "--kernels") kernels = value;
     else if (key == "--repeat") repeat = std::atoi(value.c_str());
+    else if (key == "--order") order = value;
+    else if (key == "--cgal") with_cgal = value != "0";
+    else if (key == "--stats") stats = value != "0";
     else { std::fprintf(stderr, "unknown option %s\n", key.c_str()); return 2; }
   }
   const dlab::PointSet ps = dlab::bench::make_points(set, dim, n);
   std::printf("# %dD %s, %zu points, %s; best of %d\n", dim, set.c_str(), ps.size(), algo.c_str(),
               repeat);
-  std::printf("%-22s %10s %10s %12s %12s\n", "run", "seconds", "ratio", "bytes/point", "simplices");
+  std::printf("%-22s %10s %10s %12s %12s %10s %10s\n", "run", "seconds", "ratio", "bytes/point",
+              "simplices", "cpu_s", "cpu_ratio");
 
   auto best = [&](auto job) {
     Measure b;
@@ -141,17 +167,23 @@ int main(int argc, char** argv) {
     }
     return b;
   };
-  const Measure cgal = best([&] { return cgal_run(ps); });
-  std::printf("%-22s %10.3f %10.2f %12.0f %12.0f\n", "cgal-epick", cgal.seconds, 1.0,
-              cgal.bytes / double(ps.size()), cgal.simplices);
+  Measure cgal;
+  cgal.seconds = 1;
+  if (with_cgal) cgal = best([&] { return cgal_run(ps); });
+  if (with_cgal)
+    std::printf("%-22s %10.3f %10.2f %12.0f %12.0f %10.3f %10.2f\n", "cgal-epick", cgal.seconds, 1.0,
+                cgal.bytes / double(ps.size()), cgal.simplices, cgal.cpu, 1.0);
+  else
+    cgal.cpu = 1;
   for (const std::string& kernel : split_commas(kernels)) {
     dlab::RunOptions opt;
     opt.algorithm = algo;
     opt.kernel = kernel;
-    const Measure m = best([&] { return dlab_run(ps, opt); });
-    std::printf("%-22s %10.3f %10.2f %12.0f %12.0f%s\n", ("dlab-" + kernel).c_str(), m.seconds,
-                m.seconds / cgal.seconds, m.bytes / double(ps.size()), m.simplices,
-                m.ok ? "" : "  (failed)");
+    opt.order = order;
+    const Measure m = best([&] { return dlab_run(ps, opt, stats); });
+    std::printf("%-22s %10.3f %10.2f %12.0f %12.0f %10.3f %10.2f%s\n", ("dlab-" + kernel).c_str(),
+                m.seconds, m.seconds / cgal.seconds, m.bytes / double(ps.size()), m.simplices, m.cpu,
+                m.cpu / cgal.cpu, m.ok ? "" : "  (failed)");
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 // valid but non-Delaunay triangulation of INPUT (fuzz/non_delaunay.hpp: the
 // Delaunay triangulation with K random valid flips, default K = n), the
 // starting point for the first form.
+#include <cstdint>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -23,6 +24,25 @@
 namespace dlab::cli {
 
 namespace {
+
+// 1-based line of the k-th simplex (0-based) of a SIMPLICES file: its k-th
+// line that holds data (blank and '#'-comment lines skipped, as the reader
+// does); 0 if it cannot be told (standard input, unreadable).
+std::size_t simplex_line(const std::string& path, std::int64_t k) {
+  if (path == "-" || k < 0) return 0;
+  std::ifstream f(path, std::ios::binary);
+  std::string text;
+  std::size_t line = 0;
+  std::int64_t seen = 0;
+  while (std::getline(f, text)) {
+    ++line;
+    const std::size_t hash = text.find('#');
+    if (hash != std::string::npos) text.resize(hash);
+    if (text.find_first_not_of(" \t\r,") == std::string::npos) continue;
+    if (seen++ == k) return line;
+  }
+  return 0;
+}
 
 void write_out(const std::optional<std::string>& path, const std::vector<std::uint32_t>& s, int dim) {
   if (!path || *path == "-") {
@@ -62,8 +82,15 @@ int cmd_flip(int argc, char** argv) {
     const std::vector<std::uint32_t> in = io::read_simplices(a.positional[1], dim, points.size());
     const FlipExistingResult r = dim == 2 ? flip_existing<2>(points.p2, in) : flip_existing<3>(points.p3, in);
     if (r.outcome != RunResult::Outcome::ok) {
-      std::cerr << "dlab flip: " << r.message << "\n";
-      return r.message.rfind("not a triangulation", 0) == 0 ? 2 : 1;
+      if (r.message.rfind("not a triangulation", 0) != 0) {
+        std::cerr << "dlab flip: " << r.message << "\n";
+        return 1;
+      }
+      // Bad input (exit 2): name the file, and the line when one simplex is at fault.
+      std::cerr << "dlab flip: " << a.positional[1];
+      if (const std::size_t line = simplex_line(a.positional[1], r.bad_simplex)) std::cerr << ":" << line;
+      std::cerr << ": " << r.message << "\n";
+      return 2;
     }
     write_out(a.get("-o"), r.simplices, dim);
     if (auto st = a.get("--stats")) {

@@ -2,15 +2,16 @@
 // mathematics of J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic
 // and Fast Robust Geometric Predicates", DCG 18 (1997), section 4 (orient2d,
 // orient3d, incircle, insphere; stages A, B, C, D). The first stage is inline
-// and branch-light: Shewchuk's stage A for orient2d and orient3d, a semi-static
-// filter for incircle (bound from the lifts) and insphere (bound from the
-// largest |coordinate difference| per axis, as in CGAL's and Geogram's filters;
-// our own constants, derived below). Everything after it is out of line.
+// and branch-light: Shewchuk's stage A for orient2d, a semi-static filter for
+// orient3d and insphere (bound from the largest |coordinate difference| per
+// axis, as in CGAL's and Geogram's filters; our own constants, derived below)
+// and for incircle (bound from the lifts). Everything after it is out of line.
 //
 // Stages (stage_names): 0 "filter", 1 "A", 2 "B", 3 "C", 4 "D", 5 "mp".
-//   filter: |det| > c * S^2 (incircle) or c * (per-axis maxima) (insphere)
-//   A:      |det| > errboundA * permanent (inline for orient2d / orient3d, and
-//           again out of line after the exponent guard, adaptive_kernel.cpp)
+//   filter: |det| > c * S^2 (incircle) or c * (per-axis maxima) (orient3d,
+//           insphere)
+//   A:      |det| > errboundA * permanent (inline for orient2d, and again out
+//           of line after the exponent guard, adaptive_kernel.cpp)
 //   B:      exact expansion of the determinant of the rounded differences
 //   C:      B + first-order correction by the differences' roundoff tails
 //   D:      exact determinant (expansion arithmetic)
@@ -26,6 +27,9 @@
 #include <cmath>
 #include <limits>
 #include <string_view>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "predicates/kernel.hpp"
 
@@ -47,12 +51,17 @@ inline constexpr Eb diff_node{1.0, eps};
 constexpr Eb mul(Eb x, Eb y) {
   return {x.m * y.m * (1 + eps), eps * x.m * y.m + x.m * y.e + (y.m + y.e) * x.e};
 }
+constexpr double pow_int(double b, int n) {
+  double r = 1;
+  for (int i = 0; i < n; ++i) r *= b;
+  return r;
+}
 constexpr Eb add(Eb x, Eb y) { return {(x.m + y.m) * (1 + eps), eps * (x.m + y.m) + x.e + y.e}; }
 // The last operation z = fl(x +- y) is not counted: sign(fl(v)) = sign(v), and
 // |x +- y| >= |z| / (1 + eps). The bound c * M1 * ... * Mr is itself computed
 // with r roundings (each can lose a factor 1 + eps). 2^-40 covers the rounding
 // of this constexpr evaluation; 2^-260 covers gradual-underflow crumbs allowed
-// by the range guards (error_bounds.md 3.2).
+// by the floors (error_bounds.md 3.2).
 constexpr double filter_constant(Eb x, Eb y, int r) {
   double c = (x.e + y.e) * (1 + eps);
   for (int i = 0; i < r; ++i) c *= 1 + eps;
@@ -68,10 +77,23 @@ constexpr Eb minor3() { return add(add(mul(diff_node, minor2()), mul(diff_node, 
 inline constexpr double o2_filter =
     filter_constant(mul(diff_node, diff_node), mul(diff_node, diff_node), 2);
 // orient3d: det = (adz*m1 + bdz*m2) + cdz*m3;   bound = c * mx * my * mz. (Derived for
-// comparison only: orient3d uses stage A inline instead, see below.)
+// comparison with the published constant; the inline filter evaluates det as
+// o3_half() - o3_half() instead, constant o3_ss below.)
 inline constexpr double o3_filter =
     filter_constant(add(mul(diff_node, minor2()), mul(diff_node, minor2())),
                     mul(diff_node, minor2()), 3);
+// orient3d inline filter (error_bounds.md 3.4): det = s0 - s1, each s the sum
+// (z(xy) + z(xy)) + z(xy) of three monomials; bound = o3_ss8 * ((mx' * my') * 8 mz'), three
+// roundings, m' = max(m, o3_ss_lo) (floors against gradual underflow), the factor 8
+// so that the bound overflows whenever an intermediate of det can.
+constexpr Eb o3_monomial() { return mul(diff_node, mul(diff_node, diff_node)); }
+constexpr Eb o3_half() { return add(add(o3_monomial(), o3_monomial()), o3_monomial()); }
+inline constexpr double o3_ss = filter_constant(o3_half(), o3_half(), 3);
+inline constexpr double o3_ss8 = o3_ss / 8, o3_ss_lo = 0x1p-320;
+// Every computed node of det is at most 2 * o3_half().m * (1 + eps) (units mx' my' mz'),
+// below 8 / (1 + eps)^2: an overflowed node forces (mx' my') 8 mz' (rounded) to +inf
+// (a two-difference product x y is at most mx' my', which then overflows itself).
+static_assert(2 * o3_half().m * (1 + eps) * (1 + eps) * (1 + eps) < 8);
 // incircle: det = (L_a*m_a + L_b*m_b) + L_c*m_c;   bound = c * mx * my * M * M, M = max(mx, my).
 // (Derived for comparison: incircle uses the cheaper lift filter ic_lift_filter below.)
 inline constexpr double ic_filter =
@@ -81,9 +103,15 @@ inline constexpr double is_filter =
     filter_constant(add(mul(lift3(), minor3()), mul(lift3(), minor3())),
                     add(mul(lift3(), minor3()), mul(lift3(), minor3())), 5);
 
-// Filter guard (error_bounds.md 3.2): every per-axis maximum >= lo (no harmful
-// underflow; the bound itself stays normal), and det finite (no overflow).
+// Filter floor (error_bounds.md 3.2): every per-axis maximum is raised to at least
+// is_lo (no harmful underflow; the bound itself stays normal). The bound is
+// computed as is_filter128 * (128 mx' my' mz' M' M'): the factor 128 (exact) exceeds
+// the 72 (1+eps)^k that bounds every intermediate of det (the lifts: through the
+// floors, error_bounds.md 3.2), so an overflow anywhere makes the bound +inf.
 inline constexpr double is_lo = 0x1p-185;
+inline constexpr double is_filter128 = is_filter / 128;
+constexpr Eb is_half() { return add(mul(lift3(), minor3()), mul(lift3(), minor3())); }
+static_assert(2 * is_half().m * (1 + eps) * pow_int(1 + eps, 5) < 128);
 // Exact-stage guard (error_bounds.md 2): every |coordinate difference| <= hi.
 inline constexpr double o2_hi = 0x1p+490, o3_hi = 0x1p+325, ic_hi = 0x1p+245, is_hi = 0x1p+195;
 
@@ -109,23 +137,15 @@ inline constexpr double isA = (16.0 + 224.0 * eps) * eps, isB = (5.0 + 72.0 * ep
                         isC = (80.0 + 4096.0 * eps) * e2;  // our own stage-C formula (4.4)
 
 // incircle filter from the lifts it computes anyway (error_bounds.md 3.3):
-// |det| > ic_lift_filter * S * S, S = (alift + blift) + clift, S >= ic_lift_lo, det finite.
+// |det| > ic_lift_filter * (S' * S'), S' = max((alift + blift) + clift, ic_lift_lo).
 // Shewchuk's stage A bound icA * P^ with P^ <= (1+eps)^7 P and P <= S^2 / (3 (1-eps)^8);
-// the bound c * S * S itself loses up to (1-eps)^2.
-constexpr double pow_int(double b, int n) {
-  double r = 1;
-  for (int i = 0; i < n; ++i) r *= b;
-  return r;
-}
+// the bound c * (S * S) itself loses up to (1-eps)^2.
 inline constexpr double ic_lift_filter =
     icA * pow_int(1 + eps, 7) / (3 * pow_int(1 - eps, 10)) * (1 + 0x1p-40);
 inline constexpr double ic_lift_lo = 0x1p-480;
 
 // Inline orient2d stage A (error_bounds.md 4.6).
 inline constexpr double o2_fast = o2A * (1 + 0x1p-40), o2_fast_abs = 0x1p-1072;
-// Inline orient3d stage A (error_bounds.md 4.6).
-inline constexpr double o3_fast = o3A * (1 + 0x1p-40);
-inline constexpr double o3_fast_min = 0x1p-800, o3_fast_zmax = 0x1p+100;
 
 // Out-of-line stages A..D and the mp fallback (adaptive_kernel.cpp).
 Staged orient2d_slow(const Point2& a, const Point2& b, const Point2& c);
@@ -137,14 +157,75 @@ Staged insphere_slow(const Point3& a, const Point3& b, const Point3& c, const Po
 inline constexpr unsigned char stage_filter = 0, stage_a = 1, stage_b = 2, stage_c = 3,
                                stage_d = 4, stage_mp = 5;
 
-// The filter's test, branch-free: |det| > bound, det finite (an infinite det means
-// some intermediate overflowed: never trusted), every per-axis maximum >= lo.
-inline bool filter_ok(double det, double bound, double min_axis_max, double lo) {
-  const double ad = std::fabs(det);
-  return (ad > bound) & (ad < std::numeric_limits<double>::infinity()) & (min_axis_max >= lo);
+// The orient3d filter's determinant and bound (error_bounds.md 3.4), over the
+// differences to d, with the monomials grouped by sign:
+//   s0 = (adz (bdx cdy) + bdz (cdx ady)) + cdz (adx bdy)
+//   s1 = (adz (bdy cdx) + bdz (cdy adx)) + cdz (ady bdx),     det = s0 - s1,
+//   bound = o3_ss8 ((mx' my') 8 mz'),  m' = max(largest |difference| on the axis, 2^-320).
+// Two evaluations with the same operations on the same operands (so the same
+// results, bit for bit; tests/test_adaptive_kernel.cpp checks it): plain
+// doubles, and SSE2 with the x and y of each point in one register (each
+// packed operation rounds each lane as its scalar twin would).
+struct DetBound {
+  double det, bound;
+};
+inline DetBound orient3d_filter_scalar(const Point3& a, const Point3& b, const Point3& c,
+                                       const Point3& d) {
+  const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
+  const double s0 = (adz * (bdx * cdy) + bdz * (cdx * ady)) + cdz * (adx * bdy);
+  const double s1 = (adz * (bdy * cdx) + bdz * (cdy * adx)) + cdz * (ady * bdx);
+  using std::fabs, std::max;
+  const double mx = max(max(fabs(adx), fabs(bdx)), max(fabs(cdx), o3_ss_lo));
+  const double my = max(max(fabs(ady), fabs(bdy)), max(fabs(cdy), o3_ss_lo));
+  const double mz = max(max(fabs(adz), fabs(bdz)), max(fabs(cdz), o3_ss_lo));
+  return {s0 - s1, o3_ss8 * ((mx * my) * (mz * 8))};
 }
-// Sign of a nonzero det.
-inline Sign sign_nonzero(double det) { return det < 0 ? Sign::negative : Sign::positive; }
+#if defined(__SSE2__)
+// Lanes (x, y) -> (y, x), and the high lane as a double (pshufd: no register copy).
+inline __m128d swap_lanes(__m128d v) {
+  return _mm_castsi128_pd(_mm_shuffle_epi32(_mm_castpd_si128(v), 0x4e));
+}
+inline double high_lane(__m128d v) {
+  return _mm_cvtsd_f64(_mm_castsi128_pd(_mm_shuffle_epi32(_mm_castpd_si128(v), 0xee)));
+}
+inline DetBound orient3d_filter_sse2(const Point3& a, const Point3& b, const Point3& c,
+                                     const Point3& d) {
+  const __m128d dxy = _mm_loadu_pd(d.data());
+  const __m128d ad = _mm_sub_pd(_mm_loadu_pd(a.data()), dxy);  // (adx, ady)
+  const __m128d bd = _mm_sub_pd(_mm_loadu_pd(b.data()), dxy);
+  const __m128d cd = _mm_sub_pd(_mm_loadu_pd(c.data()), dxy);
+  const __m128d az = _mm_set1_pd(a[2] - d[2]), bz = _mm_set1_pd(b[2] - d[2]),
+                cz = _mm_set1_pd(c[2] - d[2]);
+  // Lane 0 gathers s0's monomials, lane 1 s1's: (bdx cdy, bdy cdx), (cdx ady, cdy adx),
+  // (adx bdy, ady bdx); IEEE products commute exactly.
+  const __m128d p1 = _mm_mul_pd(bd, swap_lanes(cd));
+  const __m128d p2 = _mm_mul_pd(cd, swap_lanes(ad));
+  const __m128d p3 = _mm_mul_pd(ad, swap_lanes(bd));
+  const __m128d s =
+      _mm_add_pd(_mm_add_pd(_mm_mul_pd(az, p1), _mm_mul_pd(bz, p2)), _mm_mul_pd(cz, p3));
+  const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  const __m128d lo = _mm_set1_pd(o3_ss_lo);
+  const __m128d mxy = _mm_max_pd(_mm_max_pd(_mm_and_pd(ad, abs_mask), _mm_and_pd(bd, abs_mask)),
+                                 _mm_max_pd(_mm_and_pd(cd, abs_mask), lo));
+  // 8 mz': exact scaling (an overflow gives +inf, which the bound keeps).
+  const __m128d mz8 = _mm_mul_pd(
+      _mm_max_pd(_mm_max_pd(_mm_and_pd(az, abs_mask), _mm_and_pd(bz, abs_mask)),
+                 _mm_max_pd(_mm_and_pd(cz, abs_mask), lo)),
+      _mm_set1_pd(8.0));
+  return {_mm_cvtsd_f64(s) - high_lane(s),
+          o3_ss8 * ((_mm_cvtsd_f64(mxy) * high_lane(mxy)) * _mm_cvtsd_f64(mz8))};
+}
+#endif
+inline DetBound orient3d_filter(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d) {
+#if defined(__SSE2__)
+  return orient3d_filter_sse2(a, b, c, d);
+#else
+  return orient3d_filter_scalar(a, b, c, d);
+#endif
+}
 
 }  // namespace adaptive
 
@@ -182,36 +263,22 @@ struct AdaptiveKernel {
     const double ca = cdx * ady - cdy * adx;
     const double ab = adx * bdy - ady * bdx;
     const double det = (alift * bc + blift * ca) + clift * ab;
-    const double lifts = (alift + blift) + clift;
-    if (adaptive::filter_ok(det, adaptive::ic_lift_filter * lifts * lifts, lifts,
-                            adaptive::ic_lift_lo))
-      return {adaptive::sign_nonzero(det), adaptive::stage_filter};
+    // S' = max(S, ic_lift_lo) (floor against gradual underflow); S' * S' first, so
+    // that it overflows whenever an intermediate of det can (error_bounds.md 3.3).
+    const double lifts = std::max((alift + blift) + clift, adaptive::ic_lift_lo);
+    const double bound = adaptive::ic_lift_filter * (lifts * lifts);
+    if (det > bound) return {Sign::positive, adaptive::stage_filter};
+    if (-det > bound) return {Sign::negative, adaptive::stage_filter};
     return adaptive::incircle_slow(a, b, c, d);
   }
 
-  // orient3d: Shewchuk's stage A inline (bound o3A times the permanent), with the
-  // guard of error_bounds.md 4.6: permanent >= 2^-800 and every |z difference|
-  // <= 2^100, so gradual-underflow crumbs of the 2x2 products (scaled by z) stay
-  // far below the bound's extra 2^-40 relative slack; overflow makes the
-  // permanent infinite or NaN and the test false.
+  // orient3d: the per-axis filter of error_bounds.md 3.4. If an intermediate of det
+  // overflowed, the bound is +inf (or det NaN): both tests fail.
   static Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c,
                                 const Point3& d) {
-    const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
-    const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
-    const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double det =
-        (adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy)) + cdz * (adxbdy - bdxady);
-    const double az = std::fabs(adz), bz = std::fabs(bdz), cz = std::fabs(cdz);
-    const double perm = ((std::fabs(bdxcdy) + std::fabs(cdxbdy)) * az +
-                         (std::fabs(cdxady) + std::fabs(adxcdy)) * bz) +
-                        (std::fabs(adxbdy) + std::fabs(bdxady)) * cz;
-    const double zmax = std::max(std::max(az, bz), cz);
-    if ((std::fabs(det) > adaptive::o3_fast * perm) & (perm >= adaptive::o3_fast_min) &
-        (zmax <= adaptive::o3_fast_zmax))
-      return {adaptive::sign_nonzero(det), adaptive::stage_a};
+    const adaptive::DetBound f = adaptive::orient3d_filter(a, b, c, d);
+    if (f.det > f.bound) return {Sign::positive, adaptive::stage_filter};
+    if (-f.det > f.bound) return {Sign::negative, adaptive::stage_filter};
     return adaptive::orient3d_slow(a, b, c, d);
   }
 
@@ -236,16 +303,17 @@ struct AdaptiveKernel {
     const double clift = (cex * cex + cey * cey) + cez * cez;
     const double dlift = (dex * dex + dey * dey) + dez * dez;
     const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    const double mx = std::max(std::max(std::fabs(aex), std::fabs(bex)),
-                               std::max(std::fabs(cex), std::fabs(dex)));
-    const double my = std::max(std::max(std::fabs(aey), std::fabs(bey)),
-                               std::max(std::fabs(cey), std::fabs(dey)));
-    const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
-                               std::max(std::fabs(cez), std::fabs(dez)));
-    const double mmax = std::max(std::max(mx, my), mz);
-    if (adaptive::filter_ok(det, adaptive::is_filter * mx * my * mz * mmax * mmax,
-                            std::min(std::min(mx, my), mz), adaptive::is_lo))
-      return {adaptive::sign_nonzero(det), adaptive::stage_filter};
+    // Per-axis maxima with the floor is_lo (error_bounds.md 3.2), the bound with the
+    // exact factor 128 first: if an intermediate of det overflowed, the bound is +inf.
+    using std::fabs, std::max;
+    constexpr double lo = adaptive::is_lo;
+    const double mx = max(max(max(fabs(aex), fabs(bex)), max(fabs(cex), fabs(dex))), lo);
+    const double my = max(max(max(fabs(aey), fabs(bey)), max(fabs(cey), fabs(dey))), lo);
+    const double mz = max(max(max(fabs(aez), fabs(bez)), max(fabs(cez), fabs(dez))), lo);
+    const double mm = max(max(mx, my), mz);
+    const double bound = adaptive::is_filter128 * (((((mx * 128) * my) * mz) * mm) * mm);
+    if (det > bound) return {Sign::positive, adaptive::stage_filter};
+    if (-det > bound) return {Sign::negative, adaptive::stage_filter};
     return adaptive::insphere_slow(a, b, c, d, e);
   }
 

@@ -44,16 +44,34 @@
 //
 // K must be exact for the answers to mean anything (perturbing an inexact
 // zero is meaningless); perturbed<K> never changes a non-zero answer of K.
+//
+// Lattices: for K = adaptive, every predicate first tries the error-free
+// small-integer evaluation of predicates/small_integer.hpp (all coordinates
+// integers, all differences small: the determinant computed in doubles is
+// exact). When it applies, its sign is the answer -- reported as K's stage 0
+// ("filter") when non-zero -- and an exact zero is settled by the same walk on
+// the same certificate (small_integer::incircle_sos / insphere_sos, counted as
+// "perturbation"), without the expansion arithmetic that stages B-D would
+// spend proving the zero (on a 3D grid a third of all in-sphere tests are such
+// zeros). Same answers (both are exact signs; tests/test_small_integer.cpp
+// compares with perturbed<MpKernel>). On other inputs the certificate fails at
+// the reference point's x and y and K answers as before.
+// Other kernels keep their own arithmetic (mp is the reference; integer answers
+// for its snapped points), so kernel comparisons stay fair.
 #pragma once
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "predicates/kernel.hpp"
+#include "predicates/small_integer.hpp"
 #include "predicates/stages.hpp"
 
 namespace dlab {
+
+struct AdaptiveKernel;  // predicates/adaptive_kernel.hpp
 
 // Lexicographic comparison, exact (plain double comparisons).
 template <int D>
@@ -136,13 +154,12 @@ struct perturbed {
   Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const
     requires Kernel2<K>
   {
-    return base.orient2d(a, b, c);
+    return orient2d_base(a, b, c).sign;
   }
   Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const
     requires Kernel2<K>
   {
-    const Sign s = base.incircle(a, b, c, d);
-    return s != Sign::zero ? s : incircle_perturbation(a, b, c, d);
+    return incircle_staged(a, b, c, d).sign;
   }
   // The symbolic part alone (valid when the exact in-circle is zero).
   Sign incircle_perturbation(const Point2& a, const Point2& b, const Point2& c,
@@ -150,7 +167,7 @@ struct perturbed {
     requires Kernel2<K>
   {
     return sos::walk<2>({&a, &b, &c, &d}, [this](const std::array<const Point2*, 3>& t) {
-      return base.orient2d(*t[0], *t[1], *t[2]);
+      return orient2d_base(*t[0], *t[1], *t[2]).sign;
     });
   }
 
@@ -158,21 +175,20 @@ struct perturbed {
   Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const
     requires Kernel3<K>
   {
-    return base.orient3d(a, b, c, d);
+    return orient3d_base(a, b, c, d).sign;
   }
   Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                 const Point3& e) const
     requires Kernel3<K>
   {
-    const Sign s = base.insphere(a, b, c, d, e);
-    return s != Sign::zero ? s : insphere_perturbation(a, b, c, d, e);
+    return insphere_staged(a, b, c, d, e).sign;
   }
   Sign insphere_perturbation(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                              const Point3& e) const
     requires Kernel3<K>
   {
     return sos::walk<3>({&a, &b, &c, &d, &e}, [this](const std::array<const Point3*, 4>& t) {
-      return base.orient3d(*t[0], *t[1], *t[2], *t[3]);
+      return orient3d_base(*t[0], *t[1], *t[2], *t[3]).sign;
     });
   }
 
@@ -198,7 +214,7 @@ struct perturbed {
     // The projection along `axis` is non-degenerate, so the plane's normal has a
     // non-zero component on `axis` and s = a + t e_axis (t != 0) is off the plane.
     const Point3 s = off_plane(a, b, c, p, axis);
-    return base.insphere(a, b, c, s, p) * base.orient3d(a, b, c, s);
+    return insphere_base(a, b, c, s, p).sign * orient3d_base(a, b, c, s).sign;
   }
 
   // Perturbed unoriented in-circle (CGAL's coplanar_side_of_bounded_circle with
@@ -237,12 +253,19 @@ struct perturbed {
   Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) const
     requires Kernel2<K>
   {
-    return dlab::orient2d_staged(base, a, b, c);
+    return orient2d_base(a, b, c);
   }
   Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c,
                          const Point2& d) const
     requires Kernel2<K>
   {
+    if constexpr (lattice) {  // exact sign and perturbation in one go (small_integer.hpp)
+      const small_integer::SosAnswer r = small_integer::is_int(d[0])  // cheap, inline pre-test
+                                             ? small_integer::incircle_sos(a, b, c, d)
+                                             : small_integer::SosAnswer{false, Sign::zero, false};
+      if (r.known)
+        return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
+    }
     const Staged s = dlab::incircle_staged(base, a, b, c, d);
     if (s.sign != Sign::zero) return s;
     return {incircle_perturbation(a, b, c, d), static_cast<unsigned char>(perturbation_stage)};
@@ -251,27 +274,68 @@ struct perturbed {
                          const Point3& d) const
     requires Kernel3<K>
   {
-    return dlab::orient3d_staged(base, a, b, c, d);
+    return orient3d_base(a, b, c, d);
   }
   Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                          const Point3& e) const
     requires Kernel3<K>
   {
+    if constexpr (lattice) {
+      const small_integer::SosAnswer r = small_integer::is_int(e[0])
+                                             ? small_integer::insphere_sos(a, b, c, d, e)
+                                             : small_integer::SosAnswer{false, Sign::zero, false};
+      if (r.known)
+        return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
+    }
     const Staged s = dlab::insphere_staged(base, a, b, c, d, e);
     if (s.sign != Sign::zero) return s;
     return {insphere_perturbation(a, b, c, d, e), static_cast<unsigned char>(perturbation_stage)};
   }
 
  private:
+  // Kernels exact for every double input, for which the small-integer
+  // evaluation may answer in K's place (see the top of this file).
+  static constexpr bool lattice = std::is_same_v<K, AdaptiveKernel>;
+
+  // K's exact sign and stage, from the small-integer evaluation when it applies.
+  Staged orient2d_base(const Point2& a, const Point2& b, const Point2& c) const {
+    if constexpr (lattice) {
+      if (small_integer::is_int(c[0])) {
+        const small_integer::Answer r = small_integer::orient2d(a, b, c);
+        if (r.known) return {r.sign, 0};
+      }
+    }
+    return dlab::orient2d_staged(base, a, b, c);
+  }
+  Staged orient3d_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    if constexpr (lattice) {
+      if (small_integer::is_int(d[0])) {
+        const small_integer::Answer r = small_integer::orient3d(a, b, c, d);
+        if (r.known) return {r.sign, 0};
+      }
+    }
+    return dlab::orient3d_staged(base, a, b, c, d);
+  }
+  Staged insphere_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                       const Point3& e) const {
+    if constexpr (lattice) {
+      if (small_integer::is_int(e[0])) {
+        const small_integer::Answer r = small_integer::insphere(a, b, c, d, e);
+        if (r.known) return {r.sign, 0};
+      }
+    }
+    return dlab::insphere_staged(base, a, b, c, d, e);
+  }
+
   // {orientation, axis dropped by the projection}: xy drops z (2), yz drops x (0),
   // xz drops y (1).
   std::pair<Sign, int> coplanar_orientation_axis(const Point3& p, const Point3& q,
                                                  const Point3& r) const {
-    Sign o = base.orient2d({p[0], p[1]}, {q[0], q[1]}, {r[0], r[1]});
+    Sign o = orient2d_base({p[0], p[1]}, {q[0], q[1]}, {r[0], r[1]}).sign;
     if (o != Sign::zero) return {o, 2};
-    o = base.orient2d({p[1], p[2]}, {q[1], q[2]}, {r[1], r[2]});
+    o = orient2d_base({p[1], p[2]}, {q[1], q[2]}, {r[1], r[2]}).sign;
     if (o != Sign::zero) return {o, 0};
-    return {base.orient2d({p[0], p[2]}, {q[0], q[2]}, {r[0], r[2]}), 1};
+    return {orient2d_base({p[0], p[2]}, {q[0], q[2]}, {r[0], r[2]}).sign, 1};
   }
 
   // a with coordinate `axis` replaced by a different finite double, preferably

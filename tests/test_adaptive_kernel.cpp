@@ -2,14 +2,17 @@
 // truth: random inputs over many exponent ranges, exactly degenerate sets from
 // integer lattices and Pythagorean triples / quadruples (scaled, translated),
 // the same moved by ulps, huge and tiny magnitudes (which must reach the mp
-// fallback), the edges of every stage's error bound and of every guard, the
-// Kettner et al. 2008 orientation experiment, and permutation antisymmetry.
+// fallback), the edges of every stage's error bound and of every guard, inputs
+// that need each inline filter's underflow floor and overflow factor, the
+// bit-for-bit agreement of the SSE2 and plain orient3d filters, the Kettner et
+// al. 2008 orientation experiment, and permutation antisymmetry.
 #include <algorithm>
 #include <array>
 #include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <random>
@@ -89,6 +92,11 @@ TEST_CASE("filter constants: derived values and comparison with published ones",
   CHECK(is_filter / eps == Approx(1032.0).epsilon(1e-12));
   CHECK(o2_filter > 6 * eps);
   CHECK(o3_filter > 40 * eps);
+  // The inline orient3d filter's own evaluation (monomials z(xy), error_bounds.md 3.4).
+  CHECK(o3_ss / eps == Approx(40.0).epsilon(1e-12));
+  CHECK(o3_ss > 40 * eps);
+  CHECK(o3_ss8 * 8 == o3_ss);
+  CHECK(is_filter128 * 128 == is_filter);
   // Ours are below the published orient and insphere constants (different analysis;
   // the published incircle one uses a finer bound of the lifted terms).
   CHECK(o2_filter < published_o2);
@@ -327,38 +335,50 @@ TEST_CASE("exponent guards: exact at their edges, mp just beyond", "[adaptive]")
     CHECK(s.sign == Sign::positive);
     CHECK(s.stage == (e == -530 ? adaptive::stage_a : adaptive::stage_mp));
   }
-  // Inline orient3d stage A: permanent >= 2^-800 and |z differences| <= 2^100 (beyond
-  // either edge the slow path answers; its stage A has the same index, so only the
-  // signs are observable here).
+  // orient3d filter floor: per-axis maxima below 2^-320 are raised to it. At and
+  // below the floor the answers stay exact; at the floor itself the filter answers
+  // (the bound is then exactly o3_ss mx my mz).
   {
     const Point3 o{0, 0, 0};
-    for (double u : {0x1p-266, 0x1p-267, 0x1p-300}) {
+    for (double u : {adaptive::o3_ss_lo * 2, adaptive::o3_ss_lo, adaptive::o3_ss_lo / 2,
+                     0x1p-350, 0x1p-358}) {
       const Point3 pa{u, 0, 0}, pb{0, u, 0}, pc{0, 0, -u};
-      CHECK(ak.orient3d(pa, pb, pc, o) == Sign::negative);  // det = -u^3
-      CHECK(ak.orient3d(pa, pb, pc, o) == mk.orient3d(pa, pb, pc, o));
+      const Staged s = ak.orient3d_staged(pa, pb, pc, o);
+      CHECK(s.sign == Sign::negative);  // det = -u^3
+      CHECK(s.sign == mk.orient3d(pa, pb, pc, o));
+      if (u >= adaptive::o3_ss_lo) CHECK(s.stage == adaptive::stage_filter);
     }
-    for (double z : {0x1p100, 0x1.0000000000001p100, 0x1p200}) {
+    for (double z : {0x1p100, 0x1.0000000000001p100, 0x1p200, 0x1p600}) {
       const Point3 pa{1, 0, 0}, pb{0, 1, 0}, pc{0, 0, z};
-      CHECK(ak.orient3d(pa, pb, pc, o) == Sign::positive);
+      CHECK(ak.orient3d_staged(pa, pb, pc, o).sign == Sign::positive);
+      CHECK(ak.orient3d_staged(pa, pb, pc, o).stage == adaptive::stage_filter);
     }
   }
-  // Filter guard (insphere): every per-axis maximum >= lo; below, the slow path answers.
+  // insphere filter floor: per-axis maxima below is_lo are raised to it; exact on
+  // both sides, and the filter answers at the floor (bound unchanged there).
   {
     const double l2 = adaptive::is_lo;
     const Point3 pa{l2, 0, 0}, pb{0, l2, 0}, pc{-l2, 0, 0}, pd{0, 0, l2}, inside{0, 0, l2 / 2};
     CHECK(ak.insphere_staged(pa, pb, pc, pd, {0, 0, 0}).stage == adaptive::stage_filter);
-    const Staged t = ak.insphere_staged(pa, pb, pc, pd, inside);  // z maximum l2/2 < lo
-    CHECK(t.stage != adaptive::stage_filter);
+    const Staged t = ak.insphere_staged(pa, pb, pc, pd, inside);
     CHECK(t.sign == mk.insphere(pa, pb, pc, pd, inside));
+    for (double u : {l2 / 2, l2 / 1024, 0x1p-214}) {  // every maximum below the floor
+      const Point3 qa{u, 0, 0}, qb{0, u, 0}, qc{-u, 0, 0}, qd{0, 0, u}, qe{0, u / 4, u / 8};
+      CHECK(ak.insphere(qa, qb, qc, qd, qe) == mk.insphere(qa, qb, qc, qd, qe));
+      CHECK(ak.insphere(qa, qb, qc, qd, qe) != Sign::zero);  // strictly inside the sphere
+    }
   }
-  // incircle lift filter: S = sum of the lifts >= 2^-480.
+  // incircle lift filter: S = sum of the lifts is raised to at least 2^-480. At the
+  // floor the filter answers; below it the answers stay exact.
   {
     const double u = 0x1p-240;  // S = 2^-479
     const Point2 o{0, 0};
     CHECK(ak.incircle_staged({u, 0}, {0, u}, {-u, 0}, o).stage == adaptive::stage_filter);
-    const Staged t = ak.incircle_staged({u / 2, 0}, {0, u / 2}, {-u / 2, 0}, o);  // S = 2^-481
-    CHECK(t.stage != adaptive::stage_filter);
-    CHECK(t.sign == Sign::positive);
+    for (double v : {u / 2, u / 1024, 0x1p-262, 0x1p-268}) {  // S = 2^-481 ... 2^-535
+      const Staged t = ak.incircle_staged({v, 0}, {0, v}, {-v, 0}, o);
+      CHECK(t.sign == Sign::positive);
+      CHECK(t.sign == mk.incircle({v, 0}, {0, v}, {-v, 0}, o));
+    }
   }
   // Overflow: an infinite determinant is never trusted by the filter.
   {
@@ -368,6 +388,243 @@ TEST_CASE("exponent guards: exact at their edges, mp just beyond", "[adaptive]")
     CHECK(s.stage == adaptive::stage_mp);
     CHECK(s.sign == mk.orient3d(pa, pb, pc, pd));
   }
+}
+
+namespace {
+
+Q exact_orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  return det::orient3d<Q>(a, b, c, d);
+}
+int sgn(const Q& q) { return (q > 0) - (q < 0); }
+int sgn(double x) { return (x > 0) - (x < 0); }
+// The inline orient3d bound without its floors and without the factor 8 (what a
+// filter that left out error_bounds.md 3.4's underflow / overflow terms would use).
+double o3_bare_bound(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  double m[3];
+  for (int j = 0; j < 3; ++j)
+    m[j] = std::max({std::fabs(a[j] - d[j]), std::fabs(b[j] - d[j]), std::fabs(c[j] - d[j])});
+  return adaptive::o3_ss * (m[0] * m[1] * m[2]);
+}
+double is_bare_bound(const std::array<Point3, 5>& p) {
+  double m[3];
+  for (int j = 0; j < 3; ++j) {
+    m[j] = 0;
+    for (int i = 0; i < 4; ++i) m[j] = std::max(m[j], std::fabs(p[i][j] - p[4][j]));
+  }
+  const double mm = std::max({m[0], m[1], m[2]});
+  return adaptive::is_filter * m[0] * m[1] * m[2] * mm * mm;
+}
+
+}  // namespace
+
+TEST_CASE("inline filters: the underflow floors and the overflow factor are needed",
+          "[adaptive]") {
+  // Each input below was found by a search (exact rationals) for a floating
+  // determinant, evaluated exactly as the filter evaluates it, whose sign is WRONG
+  // although it clears the bare bound c * (product of per-axis maxima): only the
+  // floors (gradual-underflow crumbs) or the overflow factor keep the filter from
+  // answering. The test asserts that premise independently, then the kernel.
+  const Point3 o{0, 0, 0};
+  SECTION("orient3d: two-difference products underflow, crumbs scaled by z ~ 2^501") {
+    const Point3 a{-0x1.8p-537, -0x1p-538, -0x1p+501}, b{0x1p-536, 0x1.8p-537, 0x1p+501},
+        c{-0x1p-537, 0, -0x1p+501};
+    const double det = adaptive::orient3d_filter_scalar(a, b, c, o).det;
+    REQUIRE(sgn(det) == -sgn(exact_orient3d(a, b, c, o)));  // wrong sign
+    REQUIRE(std::fabs(det) > o3_bare_bound(a, b, c, o));    // ... above the bare bound
+    const Staged s = ak.orient3d_staged(a, b, c, o);
+    CHECK(s.sign == mk.orient3d(a, b, c, o));
+    CHECK(s.stage != adaptive::stage_filter);
+  }
+  SECTION("orient3d: the monomials z(xy) underflow (z floor)") {
+    const Point3 a{0x1.8p-299, 0x1p-298, -0x1p-474}, b{0, -0x1.2p-300, -0x1.8p-474},
+        c{0x1.ep-299, 0x1.6p-298, -0x1p-475};
+    const double det = adaptive::orient3d_filter_scalar(a, b, c, o).det;
+    REQUIRE(sgn(det) == -sgn(exact_orient3d(a, b, c, o)));
+    REQUIRE(std::fabs(det) > o3_bare_bound(a, b, c, o));
+    // Only the z floor matters here: the x, y maxima are above o3_ss_lo.
+    REQUIRE(std::max({std::fabs(a[0]), std::fabs(c[0])}) > adaptive::o3_ss_lo);
+    const Staged s = ak.orient3d_staged(a, b, c, o);
+    CHECK(s.sign == mk.orient3d(a, b, c, o));
+    CHECK(s.stage != adaptive::stage_filter);
+  }
+  SECTION("orient3d: a partial sum overflows while the product of maxima does not") {
+    const double h = 0x1p341;  // monomials h^3 = 2^1023, s0 = 2 h^3 overflows
+    const Point3 a{0, h, h}, b{h, 0, h}, c{h, h, 0};
+    const double det = adaptive::orient3d_filter_scalar(a, b, c, o).det;
+    REQUIRE(det == std::numeric_limits<double>::infinity());
+    REQUIRE(std::isfinite(o3_bare_bound(a, b, c, o)));
+    REQUIRE(adaptive::orient3d_filter(a, b, c, o).bound == std::numeric_limits<double>::infinity());
+    const Staged s = ak.orient3d_staged(a, b, c, o);
+    CHECK(s.stage != adaptive::stage_filter);
+    CHECK(s.sign == mk.orient3d(a, b, c, o));
+    CHECK(s.sign == Sign::positive);
+  }
+  SECTION("incircle: lift * minor products underflow (floor ic_lift_lo)") {
+    const Point2 a{-0x1.4p-270, -0x1.8p-270}, b{-0x1.2p-267, -0x1.68p-268},
+        c{0x1.4p-269, 0x1.8p-268}, d{0, 0};
+    const double det = det::incircle<double>(a, b, c, d);
+    auto lift = [](const Point2& q) { return q[0] * q[0] + q[1] * q[1]; };
+    const double S = (lift(a) + lift(b)) + lift(c);
+    REQUIRE(sgn(det) == -sgn(det::incircle<Q>(a, b, c, d)));
+    REQUIRE(std::fabs(det) > adaptive::ic_lift_filter * (S * S));  // the bare bound
+    const Staged s = ak.incircle_staged(a, b, c, d);
+    CHECK(s.sign == mk.incircle(a, b, c, d));
+    CHECK(s.stage != adaptive::stage_filter);
+  }
+  SECTION("incircle: det overflows while c * S * S (c first) does not") {
+    const double h = 0x1p260;
+    const Point2 a{-3 * h, -3 * h}, b{-3 * h, 3 * h}, c{2 * h, h}, d{0, 0};
+    const double det = det::incircle<double>(a, b, c, d);
+    auto lift = [](const Point2& q) { return q[0] * q[0] + q[1] * q[1]; };
+    const double S = (lift(a) + lift(b)) + lift(c);
+    REQUIRE(std::isinf(det));
+    REQUIRE(std::isfinite(adaptive::ic_lift_filter * S * S));
+    const Staged s = ak.incircle_staged(a, b, c, d);
+    CHECK(s.stage != adaptive::stage_filter);
+    CHECK(s.sign == mk.incircle(a, b, c, d));
+  }
+  SECTION("insphere: x, y products underflow (floor is_lo)") {
+    const std::array<Point3, 5> p = {{{0x1p-536, 0x1p-538, -1.0},
+                                      {0, -0x1p-537, 0.25},
+                                      {0x1.8p-537, 0x1p-536, -0.5},
+                                      {-0x1.cp-536, -0x1.cp-536, 0},
+                                      {0, 0, 0}}};
+    const double det = det::insphere<double>(p[0], p[1], p[2], p[3], p[4]);
+    const Q D = det::insphere<Q>(p[0], p[1], p[2], p[3], p[4]);
+    REQUIRE(sgn(det) == -sgn(D));
+    REQUIRE(std::fabs(det) > is_bare_bound(p));
+    const Staged s = ak.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
+    CHECK(s.sign == mk.insphere(p[0], p[1], p[2], p[3], p[4]));
+    CHECK(s.stage != adaptive::stage_filter);
+  }
+  SECTION("insphere: intermediates overflow while the product of maxima does not") {
+    const double h = 0x1p204;
+    const std::array<std::array<Point3, 5>, 3> sets = {{
+        {{{h, h, -2 * h}, {0, h, h}, {h, h, 2 * h}, {-h, -h, -h}, {0, 0, 0}}},
+        {{{2 * h, -h, 0}, {0, -h, h}, {-2 * h, h, h}, {-2 * h, -h, -h}, {0, 0, 0}}},
+        {{{-h, 2 * h, h}, {-h, -2 * h, -h}, {-h, 0, h}, {0, -h, h}, {0, 0, 0}}},
+    }};
+    for (const auto& p : sets) {
+      const double det = det::insphere<double>(p[0], p[1], p[2], p[3], p[4]);
+      REQUIRE(std::isinf(det));
+      REQUIRE(std::isfinite(is_bare_bound(p)));
+      const Staged s = ak.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
+      CHECK(s.stage != adaptive::stage_filter);
+      CHECK(s.sign == mk.insphere(p[0], p[1], p[2], p[3], p[4]));
+    }
+  }
+}
+
+TEST_CASE("inline stages answer only above their documented bound", "[adaptive]") {
+  // Black-box check of each inline stage's bound as the kernel computes it: on
+  // near-degenerate inputs (a point moved off a line / circle / plane / sphere by
+  // a few ulps, far from the origin), whenever the first stage answers, |det| (in
+  // the kernel's evaluation order) must exceed the bound of error_bounds.md computed
+  // here independently. Many inputs fall between a tenth of the bound and the bound,
+  // so a bound coded ten times too small in the kernel fails this test.
+  using namespace adaptive;
+  Rng r(18);
+  std::array<int, 4> near{};  // per predicate: inputs with bound / 10 < |det| <= bound
+  auto check = [&](int k, const Staged& st, unsigned char first, double det, double bound) {
+    if (st.stage == first) REQUIRE(std::fabs(det) > bound);
+    if (std::fabs(det) <= bound && std::fabs(det) > bound / 10) ++near[k];
+  };
+  auto mx = [](std::initializer_list<double> v) {
+    double m = 0;
+    for (double x : v) m = std::max(m, std::fabs(x));
+    return m;
+  };
+  for (int i = 0; i < 4000; ++i) {
+    const double off = std::ldexp(1.0 + r.unit(), r.range(-20, 40)) * ((i & 1) ? 1 : -1);
+    const double rad = std::ldexp(1.0, r.range(-8, 8));
+    std::array<Point3, 5> p;
+    for (auto& q : p) {
+      const double th = 6.283185307179586 * r.unit(), ph = 3.141592653589793 * r.unit();
+      q = {off + rad * std::sin(ph) * std::cos(th), off + rad * std::sin(ph) * std::sin(th),
+           off + rad * std::cos(ph)};
+    }
+    p[4][r.range(0, 2)] = ulps(p[4][r.range(0, 2)], r.range(-40, 40));
+    Point2 a{p[0][0], p[0][1]}, b{p[1][0], p[1][1]}, c{p[2][0], p[2][1]}, d{p[3][0], p[3][1]};
+    if (i % 2) {  // incircle: d near the circle through a, b, c in the xy plane
+      const double th = 6.283185307179586 * r.unit();
+      for (Point2* q : {&a, &b, &c, &d}) {
+        const double t = 6.283185307179586 * r.unit();
+        *q = {off + rad * std::cos(t), off + rad * std::sin(t)};
+      }
+      d = {off + rad * std::cos(th), ulps(off + rad * std::sin(th), r.range(-40, 40))};
+    }
+    {  // orient2d: inline stage A, bound o2_fast |dl + dr| + 2^-1072
+      const Point2 cc{ulps(a[0] + 0.5 * (b[0] - a[0]), r.range(-9, 9)),
+                      a[1] + 0.5 * (b[1] - a[1])};
+      const double acx = a[0] - cc[0], bcx = b[0] - cc[0], acy = a[1] - cc[1], bcy = b[1] - cc[1];
+      const double dl = acx * bcy, dr = acy * bcx;
+      check(0, ak.orient2d_staged(a, b, cc), stage_a, dl - dr,
+            o2_fast * std::fabs(dl + dr) + o2_fast_abs);
+    }
+    {  // incircle: lift filter, bound ic_lift_filter S'^2
+      const double adx = a[0] - d[0], ady = a[1] - d[1], bdx = b[0] - d[0], bdy = b[1] - d[1],
+                   cdx = c[0] - d[0], cdy = c[1] - d[1];
+      const double S = std::max(((adx * adx + ady * ady) + (bdx * bdx + bdy * bdy)) +
+                                    (cdx * cdx + cdy * cdy),
+                                ic_lift_lo);
+      check(1, ak.incircle_staged(a, b, c, d), stage_filter, det::incircle<double>(a, b, c, d),
+            ic_lift_filter * (S * S));
+    }
+    {  // orient3d: p[3] near the plane of p[0..2]; bound o3_ss mx' my' mz'
+      Point3 q = p[3];
+      for (int j = 0; j < 3; ++j) q[j] = p[0][j] + 0.3 * (p[1][j] - p[0][j]) + 0.4 * (p[2][j] - p[0][j]);
+      q[2] = ulps(q[2], r.range(-40, 40));
+      double m[3];
+      for (int j = 0; j < 3; ++j)
+        m[j] = std::max(mx({p[0][j] - q[j], p[1][j] - q[j], p[2][j] - q[j]}), o3_ss_lo);
+      check(2, ak.orient3d_staged(p[0], p[1], p[2], q), stage_filter,
+            orient3d_filter_scalar(p[0], p[1], p[2], q).det, o3_ss * m[0] * m[1] * m[2]);
+    }
+    {  // insphere: per-axis filter, bound is_filter mx' my' mz' M'^2
+      double m[3];
+      for (int j = 0; j < 3; ++j)
+        m[j] = std::max(mx({p[0][j] - p[4][j], p[1][j] - p[4][j], p[2][j] - p[4][j],
+                            p[3][j] - p[4][j]}),
+                        is_lo);
+      const double M = std::max({m[0], m[1], m[2]});
+      check(3, ak.insphere_staged(p[0], p[1], p[2], p[3], p[4]), stage_filter,
+            det::insphere<double>(p[0], p[1], p[2], p[3], p[4]),
+            is_filter * m[0] * m[1] * m[2] * M * M);
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    INFO("predicate " << k << ": " << near[k] << " inputs between a tenth of the bound and it");
+    CHECK(near[k] > 20);
+  }
+}
+
+TEST_CASE("orient3d filter: SSE2 and plain evaluations agree bit for bit", "[adaptive]") {
+#if defined(__SSE2__)
+  Rng r(17);
+  auto same = [](double x, double y) {
+    return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y));
+  };
+  int n = 0;
+  for (int i = 0; i < 20000; ++i) {
+    std::array<Point3, 4> p;
+    const int center = r.range(-1000, 990), spread = (i % 3) * 15;
+    for (auto& q : p)
+      for (double& x : q) {
+        x = r.dbl(center - spread, center + spread);
+        if (r.next() % 8 == 0) x = 0;  // zeros: empty axes, exact cancellations
+      }
+    if (i % 5 == 0) p[3] = p[r.range(0, 2)];  // a repeated point: det exactly 0
+    const auto v = adaptive::orient3d_filter_sse2(p[0], p[1], p[2], p[3]);
+    const auto w = adaptive::orient3d_filter_scalar(p[0], p[1], p[2], p[3]);
+    INFO("i " << i);
+    REQUIRE(same(v.det, w.det));
+    REQUIRE(same(v.bound, w.bound));
+    n += std::isinf(v.bound) || v.bound == 0;
+  }
+  CHECK(n > 0);  // some overflowed bounds (exponents up to 1030) were compared too
+#else
+  SUCCEED("no SSE2: only the plain evaluation exists");
+#endif
 }
 
 namespace {
@@ -488,7 +745,7 @@ namespace {
 
 // Worst observed error, in units of eps times the quantity the bound scales.
 struct Worst {
-  double a = 0, b = 0, filter = 0, lift = 0;
+  double a = 0, b = 0, filter = 0, lift = 0;  // lift: incircle's lift filter, orient3d's inline filter
 };
 
 // For one call: det (double, the kernel's evaluation order = det::X<double>),
@@ -561,8 +818,13 @@ TEST_CASE("stage A, stage B and filter error bounds hold on adversarial inputs",
                        (ab(u[0] * v[1]) + ab(v[0] * u[1])) * ab(t[2]);
       double m[3];
       for (int j = 0; j < 3; ++j) m[j] = std::max({ab(u[j]), ab(v[j]), ab(t[j])});
-      record(w3, det::orient3d<double>(p[0], p[1], p[2], p[3]), det::orient3d<Q>(u, v, t, z3),
-             det::orient3d<Q>(p[0], p[1], p[2], p[3]), P, m[0] * m[1] * m[2]);
+      const Q D = det::orient3d<Q>(p[0], p[1], p[2], p[3]);
+      record(w3, det::orient3d<double>(p[0], p[1], p[2], p[3]), det::orient3d<Q>(u, v, t, z3), D,
+             P, m[0] * m[1] * m[2]);
+      // The inline filter's own evaluation (monomials z(xy)) against its constant o3_ss.
+      const double fdet = adaptive::orient3d_filter_scalar(p[0], p[1], p[2], p[3]).det;
+      const Q ferr = abs(Q(fdet) - D) - Q(adaptive::eps) * abs(Q(fdet));
+      w3.lift = std::max(w3.lift, static_cast<double>(ferr / Q(m[0] * m[1] * m[2])) / adaptive::eps);
     }
     {  // insphere
       std::array<Point3, 4> q;
@@ -600,7 +862,9 @@ TEST_CASE("stage A, stage B and filter error bounds hold on adversarial inputs",
   CHECK(wi.lift > 0.05 * ic_lift_filter / eps);
   // The inline stage-A constants of orient2d and orient3d (same permanents).
   CHECK(w2.a <= o2_fast / eps);
-  CHECK(w3.a <= o3_fast / eps);
+  INFO("orient3d inline filter: worst " << w3.lift << " (bound " << o3_ss / eps << ")");
+  CHECK(w3.lift <= o3_ss / eps);
+  CHECK(w3.lift > 0.01 * o3_ss / eps);
   check("orient3d", w3, o3A, o3B, o3_filter);
   check("insphere", ws, isA, isB, is_filter);
 }

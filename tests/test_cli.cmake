@@ -200,6 +200,94 @@ foreach(k float epsilon)
   endif()
 endforeach()
 
+# ---- flip: an existing triangulation toward Delaunay (cli/cmd_flip.cpp) -----------
+# 2D: the kite's long diagonal 0-1 (kite_bad, non-Delaunay: check_not_delaunay
+# above) flips to the short one; the independent checker accepts the result,
+# and both triangles hold the short diagonal's ends 2 and 3.
+dlab_case(flip_kite RC 0 ERR "1 flips in [0-9]+ passes; Delaunay" ARGS flip kite.txt kite_bad.txt -o kite_flipped.tri)
+dlab_case(flip_kite_check RC 0 OUT "valid Delaunay" ARGS check kite.txt kite_flipped.tri)
+read_output(kf "${WORK}/kite_flipped.tri")
+if(NOT kf MATCHES "^([0-3] [0-3] [0-3]\n)([0-3] [0-3] [0-3]\n)$" OR kf MATCHES "(^|\n)[^\n]*0[^\n]*1[^\n]*\n"
+   OR kf MATCHES "(^|\n)[^\n]*1[^\n]*0[^\n]*\n")
+  message(STATUS "FAIL flip_kite: the long diagonal 0-1 is still there: ${kf}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# 2D: --make-start writes a valid triangulation that check rejects as
+# non-Delaunay (status 1); flipping it ends Delaunay (status 0, checked).
+dlab_case(flip_gen2 RC 0 ARGS gen uniform --n 300 --seed 4 -o flip2.txt)
+dlab_case(flip_start2 RC 0 ARGS flip flip2.txt --make-start --seed 2 -o flip2_start.tri)
+dlab_case(flip_start2_check RC 1 OUT "not_delaunay: [1-9]" ARGS check flip2.txt flip2_start.tri)
+dlab_case(flip_run2 RC 0 ERR "flips in [0-9]+ passes; Delaunay" ARGS flip flip2.txt flip2_start.tri -o flip2_out.tri)
+dlab_case(flip_run2_check RC 0 OUT "valid Delaunay" ARGS check flip2.txt flip2_out.tri)
+# 3D: two tetrahedra 0123 and 1024 on the facet 012 with 4 inside the sphere
+# of 0123: one 2-3 flip gives the three tetrahedra around edge 3-4.
+file(WRITE "${WORK}/bipyramid.txt" "-2 -2 0\n4 -2 0\n-2 4 0\n0 0 1\n0 0 -1\n")
+file(WRITE "${WORK}/bipyramid_bad.tet" "0 1 2 3\n1 0 2 4\n")
+dlab_case(flip_3d_start_check RC 1 ARGS check bipyramid.txt bipyramid_bad.tet)
+dlab_case(flip_3d RC 0 ERR "1 flips in [0-9]+ passes; Delaunay" ARGS flip bipyramid.txt bipyramid_bad.tet -o bipyramid.tet --stats flip3.json)
+dlab_case(flip_3d_check RC 0 OUT "valid Delaunay" ARGS check bipyramid.txt bipyramid.tet)
+read_output(bp "${WORK}/bipyramid.tet")
+if(NOT bp MATCHES "^([0-4] [0-4] [0-4] [0-4]\n)([0-4] [0-4] [0-4] [0-4]\n)([0-4] [0-4] [0-4] [0-4]\n)$")
+  message(STATUS "FAIL flip_3d: three tetrahedra expected: ${bp}")
+  math(EXPR failures "${failures} + 1")
+endif()
+read_output(fj "${WORK}/flip3.json")
+if(NOT fj MATCHES "\"flips_2_3\": 1,")
+  message(STATUS "FAIL flip_3d stats: one 2-3 flip expected: ${fj}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# 3D from --make-start: the result is a valid triangulation either way; exit 0
+# when it is Delaunay, 1 when the flips are stuck (reported, never looped).
+dlab_case(flip_gen3 RC 0 ARGS gen uniform --dim 3 --n 80 --seed 5 -o flip3.txt)
+dlab_case(flip_start3 RC 0 ARGS flip flip3.txt --make-start --seed 1 -o flip3_start.tet)
+dlab_case(flip_start3_check RC 1 OUT "not_delaunay: [1-9]" ARGS check flip3.txt flip3_start.tet)
+execute_process(COMMAND "${DLAB}" flip flip3.txt flip3_start.tet -o flip3_out.tet WORKING_DIRECTORY "${WORK}"
+                RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET TIMEOUT 120)
+if(rc STREQUAL "0" AND err MATCHES "; Delaunay")
+  dlab_case(flip_run3_check RC 0 OUT "valid Delaunay" ARGS check flip3.txt flip3_out.tet)
+elseif(rc STREQUAL "1" AND err MATCHES "stuck: [1-9][0-9]* non-Delaunay facets left")
+  dlab_case(flip_run3_check RC 1 ARGS check flip3.txt flip3_out.tet)
+else()
+  message(STATUS "FAIL flip_run3: status ${rc}: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# Lawson in 3D on a lattice (points on hull facets and edges, coplanar hull
+# faces: inserted by flips) passes the checker.
+dlab_case(lawson_gen3 RC 0 ARGS gen lattice --dim 3 --n 125 -o lattice3.txt)
+dlab_case(lawson_lattice3 RC 0 ARGS triangulate lattice3.txt --algo lawson --order random -o lattice3.tet)
+dlab_case(lawson_lattice3_check RC 0 OUT "valid Delaunay" ARGS check lattice3.txt lattice3.tet)
+# Bad input: exit 2, the message names the file and the line of the bad simplex.
+file(WRITE "${WORK}/kite_cw2.txt" "# a comment line, then a blank one\n\n0 3 2\n3 2 1\n")
+dlab_case(flip_clockwise RC 2 ERR "kite_cw.txt:1: not a triangulation: simplex 0 is not positively oriented" ARGS flip kite.txt kite_cw.txt)
+dlab_case(flip_clockwise_line RC 2 ERR "kite_cw2.txt:4: not a triangulation: simplex 1 is not positively oriented" ARGS flip kite.txt kite_cw2.txt)
+file(WRITE "${WORK}/kite_dup.txt" "0 3 2\n3 1 2\n0 3 2\n")
+dlab_case(flip_not_manifold RC 2 ERR "kite_dup.txt: not a triangulation: a facet is shared by more than two simplices" ARGS flip kite.txt kite_dup.txt)
+dlab_case(flip_range RC 2 ERR "kite_range.txt:2: vertex index 9 out of range" ARGS flip kite.txt kite_range.txt)
+dlab_case(flip_nan RC 2 ERR "nan.txt:2: NaN" ARGS flip nan.txt kite_delaunay.txt)
+dlab_case(flip_usage RC 2 ERR "usage: dlab flip" ARGS flip kite.txt)
+dlab_case(flip_unknown_option RC 2 ERR "unknown option '--frob'" ARGS flip kite.txt kite_bad.txt --frob)
+
+# ---- every algorithm through the same contract ----------------------------------
+# The independent checker accepts each algorithm's result on the square (2D,
+# cocircular) and the cube (3D, cospherical); the options of one algorithm are
+# usage errors on another.
+foreach(a bowyer-watson lawson tanemura george)
+  dlab_case(algo_${a}_2d RC 0 ARGS triangulate square.txt --algo ${a} -o square_${a}.tri)
+  dlab_case(algo_${a}_2d_check RC 0 OUT "valid Delaunay" ARGS check square.txt square_${a}.tri)
+  dlab_case(algo_${a}_3d RC 0 ARGS triangulate cube.txt --algo ${a} --kernel integer -o cube_${a}.tet)
+  dlab_case(algo_${a}_3d_check RC 0 OUT "valid Delaunay" ARGS check cube.txt cube_${a}.tet)
+endforeach()
+dlab_case(tanemura_lower_dimensional RC 0 OUT "^$" ERR "lower-dimensional" ARGS triangulate collinear.txt --algo tanemura)
+dlab_case(sphere_option_elsewhere RC 2 ERR "options of --algo george only" ARGS triangulate square.txt --algo tanemura --exact-sphere)
+# George's enclosing box with the paper's integer kernel: the box is removed
+# afterwards, and what that leaves missing is reported in the stats.
+dlab_case(george_box_integer RC 0 ARGS triangulate cube.txt --algo george --kernel integer --enclosing-box --stats box.json -o box.tet)
+read_output(bj "${WORK}/box.json")
+if(NOT bj MATCHES "\"box_simplices_removed\": [1-9]" OR NOT bj MATCHES "\"hull_facets_missing\": ")
+  message(STATUS "FAIL george_box_integer stats: ${bj}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} CLI case(s) failed")
 endif()

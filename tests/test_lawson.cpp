@@ -130,6 +130,27 @@ TEST_CASE("lawson 3D equals Bowyer-Watson, valid, order independent", "[lawson]"
   check_exact<3>(gen::perturb_ulps<3>(gen::cospherical<3>(40, 3), 1, 9), "near-cospherical");
 }
 
+// Hull insertions are all flips now (Joe's exterior rule, then flips; the
+// coplanar hull edge flip): a two-layer grid in input order puts every new
+// point outside the hull and coplanar with hull faces, on the lines of hull
+// edges, or on a hull vertex (duplicates).
+TEST_CASE("lawson 3D: points outside and on the hull, coplanar with hull faces", "[lawson]") {
+  std::vector<Point3> pts = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 6; ++y)
+      for (int x = 0; x < 6; ++x) pts.push_back({double(x), double(y), double(z)});
+  check_exact<3>(pts, "two-layer grid");
+  const RunResult r = go(make_set<3>(pts), "lawson", "adaptive", "input");
+  REQUIRE(r.outcome == RunResult::Outcome::ok);
+  CHECK(counter(r, "insert_exterior") > 60);   // every new point but the 4 duplicates
+  CHECK(counter(r, "exterior_facets") >= counter(r, "insert_exterior"));
+  CHECK(counter(r, "flips_4_4") > 0);          // coplanar hull faces re-triangulated
+  CHECK(counter(r, "duplicates") == 4);
+  // The same points in reverse order: on hull facets and edges of the big box first.
+  std::vector<Point3> rev(pts.rbegin(), pts.rend());
+  check_exact<3>(rev, "two-layer grid, reversed");
+}
+
 TEST_CASE("lawson on random small lattices equals Bowyer-Watson", "[lawson][property]") {
   rc::prop("2D and 3D, points on a 4^d grid (many ties)", [](std::uint64_t seed) {
     for (int dim : {2, 3}) {
@@ -174,6 +195,10 @@ TEST_CASE("lawson counters show the insertion cases and flip types", "[lawson]")
   CHECK(counter(l3, "insert_2_6") > 0);
   CHECK(counter(l3, "insert_n_2n") > 0);
   CHECK(counter(l3, "flips_4_4") > 0);
+  CHECK(counter(l3, "insert_exterior") > 0);
+  CHECK(counter(l3, "insert_on_hull") > 0);  // on a hull facet or edge: split with its ghosts
+  CHECK(counter(l3, "insert_on_hull") <= counter(l3, "insert_2_6") + counter(l3, "insert_n_2n"));
+  CHECK(counter(l3, "hull_edge_removals") > 0);  // coplanar hull edges with more than 2 tetrahedra below
   const RunResult u3 = go(make_set<3>(gen::uniform<3>(500, 2)), "lawson", "adaptive");
   CHECK(counter(u3, "insert_1_4") > 0);
   CHECK(counter(u3, "flips_2_3") > 0);
@@ -232,6 +257,68 @@ TEST_CASE("2D edge flip primitive relinks a quad consistently", "[lawson]") {
   });
   const std::vector<std::uint32_t> expect = {1, 2, 3, 3, 0, 1};
   CHECK(canon<2>(flat) == canon<2>(expect));
+}
+
+// The directly wired 3D flips keep the mesh consistent: a bipyramid over
+// triangle 012 with apexes 3 (above) and 4 (below).  Apexes close to the
+// plane: 4 is inside the sphere of 0123, and the 2-3 flip gives the three
+// tetrahedra around edge 34; apexes far: the three tetrahedra around 34 are
+// not Delaunay and the 3-2 flip about 34 gives back 0123 + 1024.
+TEST_CASE("3D 2-3 and 3-2 flip primitives relink consistently", "[lawson]") {
+  using F = Flipper<MpKernel, 3>;
+  const MpKernel k;
+  auto finite = [](const Mesh<3>& m) {
+    std::vector<std::uint32_t> flat;
+    m.for_each_finite([&](std::uint32_t s) {
+      for (int j = 0; j < 4; ++j) flat.push_back(m.vertex(s, j));
+    });
+    return canon<3>(flat);
+  };
+  auto apex_tet = [](const Mesh<3>& m, std::uint32_t v) {  // a finite tetrahedron holding v
+    for (std::uint32_t s = 0; s < m.slots(); ++s)
+      if (m.alive(s) && !m.is_ghost(s))
+        for (int j = 0; j < 4; ++j)
+          if (m.vertex(s, j) == v) return std::pair<std::uint32_t, int>(s, j);
+    return std::pair<std::uint32_t, int>(kDead, -1);
+  };
+  const std::vector<Point3> near = {{-2, -2, 0}, {4, -2, 0}, {-2, 4, 0}, {0, 0, 1}, {0, 0, -1}};
+  const std::vector<std::uint32_t> two = {0, 1, 2, 3, 1, 0, 2, 4};
+  Mesh<3> m;
+  std::int64_t bad = -1;
+  REQUIRE(flip_existing_detail::build<3>(k, std::span<const Point3>(near), std::span<const std::uint32_t>(two),
+                                         m, bad)
+              .empty());
+  F fl(k, m);
+  fl.set_points(near.data());
+  const auto [s, f] = apex_tet(m, 3);
+  REQUIRE(fl.try_flip(s, f) == F::Result::flipped);
+  CHECK(fl.counts.f23 == 1);
+  CHECK(m.check_structure().empty());
+  const std::vector<std::uint32_t> three = {3, 4, 0, 1, 3, 4, 1, 2, 3, 4, 2, 0};
+  // (orientation-free comparison: sort each simplex's vertices)
+  auto sorted = [](std::vector<std::array<std::uint32_t, 4>> v) {
+    for (auto& a : v) std::sort(a.begin(), a.end());
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  CHECK(sorted(finite(m)) == sorted(canon<3>(three)));
+
+  // Far apexes: from tetrahedron 2+{3,4,0}, facet 340 (opposite 2) is shared
+  // with 1+{3,4,0}; segment 2-1 passes beyond edge 34: 3-2 about 34.
+  const std::vector<Point3> far = {{-2, -2, 0}, {4, -2, 0}, {-2, 4, 0}, {0, 0, 50}, {0, 0, -50}};
+  fl.set_points(far.data());
+  std::uint32_t s2 = kDead;
+  int f2 = -1;
+  for (std::uint32_t t = 0; t < m.slots(); ++t)
+    if (m.alive(t) && !m.is_ghost(t) && FlipMesh<3>::slot_of(m, t, 2) >= 0 && FlipMesh<3>::slot_of(m, t, 0) >= 0) {
+      s2 = t;
+      f2 = FlipMesh<3>::slot_of(m, t, 2);
+    }
+  REQUIRE(s2 != kDead);
+  REQUIRE(fl.try_flip(s2, f2) == F::Result::flipped);
+  CHECK(fl.counts.f32 == 1);
+  CHECK(m.check_structure().empty());
+  CHECK(sorted(finite(m)) == sorted(canon<3>(two)));
 }
 
 TEST_CASE("flip-existing: 2D converges to Delaunay, 3D reports when stuck", "[lawson]") {

@@ -1,0 +1,300 @@
+// Exact predicates for points with small integer coordinates, in plain doubles.
+//
+// Certificate. (1) Every coordinate x passes is_int: (x + 1.5*2^52) - 1.5*2^52
+// == x. That value is always an integer or non-finite (for |x| <= 2^51 it is x
+// rounded to an integer; beyond, every double is an integer), so a finite x
+// that passes is an integer; NaN never passes; +-inf passes. Every integer of
+// magnitude <= 2^51 passes (some larger ones are refused: that is only slower). (2) Every
+// coordinate difference d = fl(a - e) used by the determinant has |d| <= B
+// (B <= 2^52), and the reference point e (the one subtracted from all others)
+// is finite. Then every difference is exact: an infinite a gives |d| = inf,
+// refused by (2) (with e finite no difference is NaN, which a maximum could
+// drop); for finite integers a, e, either
+// e/2 <= a <= 2e (same sign; Sterbenz: a - e is exact) or |a - e| >= max(|a|,
+// |e|) / 2, so |a|, |e| <= 2B + 1 <= 2^53 and the integer a - e, of magnitude
+// <= B + 1, is a double. With exact integer differences bounded by B, every
+// product and partial sum of the expansions below is an integer bounded by the
+// figure listed; while that is <= 2^53 no operation rounds, so the computed
+// determinant IS the exact determinant and its sign is exact -- zero included.
+// No tolerance anywhere: an error-free evaluation, not a filter.
+//
+// This is what the symbolic perturbation needs on lattices (grids, cubes):
+// there most in-circle / in-sphere tests are exactly zero, and proving a zero
+// with expansion arithmetic costs thousands of instructions, against a few
+// dozen here. `known == false` means "not certified: ask an exact kernel".
+//
+// incircle_sos / insphere_sos also finish the job when the determinant is
+// zero: the symbolic perturbation of predicates/perturbed.hpp (sos::walk,
+// Devillers & Teillaud 2011), on the same certificate. Relative to the query,
+// every point is an integer vector with coordinates in [-B, B]; its
+// lexicographic rank is that of the integer key ((x+B)(2B+1) + (y+B))(2B+1) +
+// (z+B) (subtracting the query preserves the order, and the key is exact), and
+// the orientations the walk asks are determinants of differences of such
+// vectors, at most 2B per entry: exact by the orient2d / orient3d budgets.
+//
+// Sign conventions are Shewchuk's (predicates/kernel.hpp); the determinants are
+// expanded as in predicates/adaptive_kernel.hpp (Shewchuk 1997, section 4).
+// Bounds, with |difference| <= B (the largest intermediate of each):
+//   orient2d   acx*bcy - acy*bcx                                 2 B^2
+//   incircle   lifts 2 B^2, minors 2 B^2, det                    12 B^4
+//   orient3d   minors 2 B^2, det                                 6 B^3
+//   insphere   minors 2 B^2, 3x3 minors 6 B^3, lifts 3 B^2, det  72 B^5
+#pragma once
+#include <algorithm>
+#include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "predicates/point.hpp"
+#include "predicates/sign.hpp"
+
+namespace dlab::small_integer {
+
+struct Answer {
+  bool known;  // the evaluation was certified exact
+  Sign sign;
+};
+
+inline constexpr double two53 = 0x1p53;
+inline constexpr double o2_bound = 0x1p25, ic_bound = 0x1p12, o3_bound = 0x1p16, is_bound = 0x1p9;
+static_assert(2 * o2_bound * o2_bound <= two53);
+static_assert(12 * ic_bound * ic_bound * ic_bound * ic_bound <= two53);
+static_assert(6 * o3_bound * o3_bound * o3_bound <= two53);
+static_assert(72 * is_bound * is_bound * is_bound * is_bound * is_bound <= two53);
+static_assert(2 * is_bound + 1 <= two53 && 2 * o2_bound + 1 <= two53);  // (2) above
+
+// Integer or infinite (see the certificate above); -fno-fast-math keeps
+// (x + c) - c from being simplified.
+inline bool is_int(double x) {
+  constexpr double c = 0x1.8p52;
+  return (x + c) - c == x;
+}
+
+// Every coordinate of the N points passes is_int, and the last point (the
+// reference) is finite, |x| <= 2^52. SSE2: the same operations two lanes at a
+// time (each lane rounds as its scalar twin); scalar otherwise. Both leave
+// after the reference's x and y when those fail (the common case off lattices).
+template <int D, int N>
+inline bool all_int(const Point<D>* const (&p)[N]) {
+#if defined(__SSE2__)
+  const __m128d c = _mm_set1_pd(0x1.8p52);
+  auto integral = [&](__m128d v) { return _mm_cmpeq_pd(_mm_sub_pd(_mm_add_pd(v, c), c), v); };
+  const __m128d ref = _mm_loadu_pd(p[N - 1]->data());  // (x, y) of the reference
+  const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  __m128d ok = _mm_cmple_pd(_mm_and_pd(ref, abs_mask), _mm_set1_pd(0x1p52));
+  ok = _mm_and_pd(ok, integral(ref));
+  // Off lattices (uniform points) the answer is known here: leave early.
+  if (_mm_movemask_pd(ok) != 3) return false;
+  for (int i = 0; i < N - 1; ++i) ok = _mm_and_pd(ok, integral(_mm_loadu_pd(p[i]->data())));
+  if constexpr (D == 3) {
+    // z coordinates two by two; the reference's z is also bounded.
+    const __m128d rz = _mm_load_sd(&(*p[N - 1])[2]);
+    ok = _mm_and_pd(ok, _mm_unpacklo_pd(_mm_cmple_sd(_mm_and_pd(rz, abs_mask), _mm_set1_pd(0x1p52)),
+                                        _mm_cmple_sd(_mm_and_pd(rz, abs_mask), _mm_set1_pd(0x1p52))));
+    for (int i = 0; i < N; i += 2) {
+      const __m128d z = _mm_loadh_pd(_mm_load_sd(&(*p[i])[2]), &(*p[i + 1 < N ? i + 1 : i])[2]);
+      ok = _mm_and_pd(ok, integral(z));
+    }
+  }
+  return _mm_movemask_pd(ok) == 3;
+#else
+  bool ok = true;
+  for (int j = 0; j < D; ++j) ok &= is_int((*p[N - 1])[j]) & (std::fabs((*p[N - 1])[j]) <= 0x1p52);
+  if (!ok) return false;
+  for (int i = 0; i < N - 1; ++i) {
+    for (int j = 0; j < D; ++j) ok &= is_int((*p[i])[j]);
+    if (!ok) return false;
+  }
+  return true;
+#endif
+}
+
+inline double amax(double a, double b) { return std::max(std::fabs(a), std::fabs(b)); }
+
+inline Answer orient2d(const Point2& a, const Point2& b, const Point2& c) {
+  if (!all_int<2, 3>({&a, &b, &c})) return {false, Sign::zero};
+  const double acx = a[0] - c[0], bcx = b[0] - c[0];
+  const double acy = a[1] - c[1], bcy = b[1] - c[1];
+  if (!(std::max(amax(acx, bcx), amax(acy, bcy)) <= o2_bound)) return {false, Sign::zero};
+  return {true, sign_of(acx * bcy - acy * bcx)};
+}
+
+inline Answer incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  if (!all_int<2, 4>({&a, &b, &c, &d})) return {false, Sign::zero};
+  const double adx = a[0] - d[0], ady = a[1] - d[1];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
+  if (!(std::max(std::max(amax(adx, ady), amax(bdx, bdy)), amax(cdx, cdy)) <= ic_bound))
+    return {false, Sign::zero};
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double bc = bdx * cdy - bdy * cdx;
+  const double ca = cdx * ady - cdy * adx;
+  const double ab = adx * bdy - ady * bdx;
+  return {true, sign_of((alift * bc + blift * ca) + clift * ab)};
+}
+
+inline Answer orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  if (!all_int<3, 4>({&a, &b, &c, &d})) return {false, Sign::zero};
+  const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
+  const double m = std::max(std::max(std::max(amax(adx, ady), amax(adz, bdx)),
+                                     std::max(amax(bdy, bdz), amax(cdx, cdy))),
+                            std::fabs(cdz));
+  if (!(m <= o3_bound)) return {false, Sign::zero};
+  const double det = (adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy)) +
+                     cdz * (adx * bdy - bdx * ady);
+  return {true, sign_of(det)};
+}
+
+inline Answer insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                       const Point3& e) {
+  if (!all_int<3, 5>({&a, &b, &c, &d, &e})) return {false, Sign::zero};
+  const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+  const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+  const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+  const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+  const double m = std::max(std::max(std::max(amax(aex, aey), amax(aez, bex)),
+                                     std::max(amax(bey, bez), amax(cex, cey))),
+                            std::max(std::max(amax(cez, dex), amax(dey, dez)), 0.0));
+  if (!(m <= is_bound)) return {false, Sign::zero};
+  const double ab = aex * bey - bex * aey;
+  const double bc = bex * cey - cex * bey;
+  const double cd = cex * dey - dex * cey;
+  const double da = dex * aey - aex * dey;
+  const double ac = aex * cey - cex * aey;
+  const double bd = bex * dey - dex * bey;
+  const double abc = (aez * bc - bez * ac) + cez * ab;
+  const double bcd = (bez * cd - cez * bd) + dez * bc;
+  const double cda = (cez * da + dez * ac) + aez * cd;
+  const double dab = (dez * ab + aez * bd) + bez * da;
+  const double alift = (aex * aex + aey * aey) + aez * aez;
+  const double blift = (bex * bex + bey * bey) + bez * bez;
+  const double clift = (cex * cex + cey * cey) + cez * cez;
+  const double dlift = (dex * dex + dey * dey) + dez * dez;
+  return {true, sign_of((dlift * abc - clift * dab) + (blift * cda - alift * bcd))};
+}
+
+struct SosAnswer {
+  bool known;          // certified (the points are small integers)
+  Sign sign;           // the perturbed sign (zero only for degenerate simplices)
+  bool by_perturbation;  // the exact determinant was zero
+};
+
+namespace detail {
+// Visits i in 0..N-1 by decreasing key, the lower index first among equal keys
+// (sos::by_decreasing_rank's stable order), until f(i) is non-zero.
+template <int N, class F>
+Sign by_decreasing_key(const long (&key)[N], F&& f) {
+  bool used[N] = {};
+  for (int step = 0; step < N; ++step) {
+    int best = -1;
+    for (int i = 0; i < N; ++i)
+      if (!used[i] && (best < 0 || key[i] > key[best])) best = i;
+    used[best] = true;
+    const Sign s = f(best);
+    if (s != Sign::zero) return s;
+  }
+  return Sign::zero;
+}
+inline Sign orient2(const double* p, const double* q, const double* r) {
+  return sign_of((p[0] - r[0]) * (q[1] - r[1]) - (p[1] - r[1]) * (q[0] - r[0]));
+}
+inline Sign orient3(const double* p, const double* q, const double* r, const double* s) {
+  const double adx = p[0] - s[0], ady = p[1] - s[1], adz = p[2] - s[2];
+  const double bdx = q[0] - s[0], bdy = q[1] - s[1], bdz = q[2] - s[2];
+  const double cdx = r[0] - s[0], cdy = r[1] - s[1], cdz = r[2] - s[2];
+  return sign_of((adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy)) +
+                 cdz * (adx * bdy - bdx * ady));
+}
+// sos::walk<3> on the certified points (see the top of this file).
+[[gnu::noinline]] inline Sign insphere_walk(const Point3& a, const Point3& b, const Point3& c,
+                                            const Point3& d, const Point3& e) {
+  const double v[5][3] = {{a[0] - e[0], a[1] - e[1], a[2] - e[2]},
+                          {b[0] - e[0], b[1] - e[1], b[2] - e[2]},
+                          {c[0] - e[0], c[1] - e[1], c[2] - e[2]},
+                          {d[0] - e[0], d[1] - e[1], d[2] - e[2]},
+                          {0, 0, 0}};
+  constexpr long B = static_cast<long>(is_bound), W = 2 * B + 1;
+  long key[5];
+  for (int i = 0; i < 5; ++i)
+    key[i] = ((static_cast<long>(v[i][0]) + B) * W + (static_cast<long>(v[i][1]) + B)) * W +
+             (static_cast<long>(v[i][2]) + B);
+  // The query (4) contributes -orient(a, b, c, d); point i the orientation of
+  // (a, b, c, d) with i replaced by the query.
+  return by_decreasing_key<5>(key, [&](int i) {
+    if (i == 4) return -orient3(v[0], v[1], v[2], v[3]);
+    const double* t[4] = {v[0], v[1], v[2], v[3]};
+    t[i] = v[4];
+    return orient3(t[0], t[1], t[2], t[3]);
+  });
+}
+}  // namespace detail
+// The walk's orientations take differences of two vectors of [-B, B]^D.
+static_assert(2 * (2 * ic_bound) * (2 * ic_bound) <= two53);
+static_assert(6 * (2 * is_bound) * (2 * is_bound) * (2 * is_bound) <= two53);
+
+inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  if (!all_int<2, 4>({&a, &b, &c, &d})) return {false, Sign::zero, false};
+  const double v[4][2] = {{a[0] - d[0], a[1] - d[1]}, {b[0] - d[0], b[1] - d[1]},
+                          {c[0] - d[0], c[1] - d[1]}, {0, 0}};
+  if (!(std::max(std::max(amax(v[0][0], v[0][1]), amax(v[1][0], v[1][1])),
+                 amax(v[2][0], v[2][1])) <= ic_bound))
+    return {false, Sign::zero, false};
+  const double alift = v[0][0] * v[0][0] + v[0][1] * v[0][1];
+  const double blift = v[1][0] * v[1][0] + v[1][1] * v[1][1];
+  const double clift = v[2][0] * v[2][0] + v[2][1] * v[2][1];
+  const double bc = v[1][0] * v[2][1] - v[1][1] * v[2][0];
+  const double ca = v[2][0] * v[0][1] - v[2][1] * v[0][0];
+  const double ab = v[0][0] * v[1][1] - v[0][1] * v[1][0];
+  const Sign exact = sign_of((alift * bc + blift * ca) + clift * ab);
+  if (exact != Sign::zero) return {true, exact, false};
+  constexpr long B = static_cast<long>(ic_bound), W = 2 * B + 1;
+  long key[4];
+  for (int i = 0; i < 4; ++i)
+    key[i] = (static_cast<long>(v[i][0]) + B) * W + (static_cast<long>(v[i][1]) + B);
+  // sos::walk<2>: the query (3) contributes -orient(a, b, c); point i the
+  // orientation of (a, b, c) with i replaced by the query.
+  const Sign s = detail::by_decreasing_key<4>(key, [&](int i) {
+    if (i == 3) return -detail::orient2(v[0], v[1], v[2]);
+    const double* t[3] = {v[0], v[1], v[2]};
+    t[i] = v[3];
+    return detail::orient2(t[0], t[1], t[2]);
+  });
+  return {true, s, true};
+}
+
+inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                              const Point3& e) {
+  if (!all_int<3, 5>({&a, &b, &c, &d, &e})) return {false, Sign::zero, false};
+  const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+  const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+  const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+  const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+  const double m = std::max(std::max(std::max(amax(aex, aey), amax(aez, bex)),
+                                     std::max(amax(bey, bez), amax(cex, cey))),
+                            std::max(amax(cez, dex), amax(dey, dez)));
+  if (!(m <= is_bound)) return {false, Sign::zero, false};
+  const double ab = aex * bey - bex * aey;
+  const double bc = bex * cey - cex * bey;
+  const double cd = cex * dey - dex * cey;
+  const double da = dex * aey - aex * dey;
+  const double ac = aex * cey - cex * aey;
+  const double bd = bex * dey - dex * bey;
+  const double abc = (aez * bc - bez * ac) + cez * ab;
+  const double bcd = (bez * cd - cez * bd) + dez * bc;
+  const double cda = (cez * da + dez * ac) + aez * cd;
+  const double dab = (dez * ab + aez * bd) + bez * da;
+  const double alift = (aex * aex + aey * aey) + aez * aez;
+  const double blift = (bex * bex + bey * bey) + bez * bez;
+  const double clift = (cex * cex + cey * cey) + cez * cez;
+  const double dlift = (dex * dex + dey * dey) + dez * dez;
+  const Sign exact = sign_of((dlift * abc - clift * dab) + (blift * cda - alift * bcd));
+  if (exact != Sign::zero) return {true, exact, false};
+  return {true, detail::insphere_walk(a, b, c, d, e), true};
+}
+
+}  // namespace dlab::small_integer

@@ -1,0 +1,204 @@
+// predicates/small_integer.hpp (error-free evaluation on small integer
+// coordinates) and its use by perturbed<AdaptiveKernel>, against MpKernel:
+//  - whenever the certificate holds (`known`), the sign is MpKernel's, at the
+//    extreme corners of the bit budget (every difference = +-B, coordinates
+//    near 2^51) as well as on random lattice points and exact cospherical sets;
+//  - the certificate refuses what it must: non-integers (including the cases
+//    where the rounded difference is an integer: 1e-300 - 3, (1 + 2^-52) - 513),
+//    differences beyond B, infinities and NaN;
+//  - perturbed<AdaptiveKernel> gives perturbed<MpKernel>'s answers on lattices,
+//    and exact zeros are still counted as decided by the perturbation.
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+
+#include "predicates/adaptive_kernel.hpp"
+#include "predicates/mp_kernel.hpp"
+#include "predicates/perturbed.hpp"
+#include "predicates/small_integer.hpp"
+
+using namespace dlab;
+
+namespace {
+
+const MpKernel mp;
+
+// Coordinates base + k with k uniform in [-half, half].
+struct Lattice {
+  std::mt19937_64 gen;
+  double base, half;
+  double next() {
+    const std::uint64_t span = static_cast<std::uint64_t>(2 * half) + 1;
+    return base + (static_cast<double>(gen() % span) - half);
+  }
+  Point2 p2() { return {next(), next()}; }
+  Point3 p3() { return {next(), next(), next()}; }
+};
+
+}  // namespace
+
+TEST_CASE("small_integer: bit budgets at the corners", "[small_integer]") {
+  using namespace small_integer;
+  // All differences +-B with a cancelling structure, and the largest products.
+  const double B3 = is_bound, Bo = o3_bound, Bc = ic_bound, B2 = o2_bound;
+  for (double base : {0.0, 0x1p51, -0x1p51, 12345.0}) {
+    const Point3 e{base, base, base};
+    const Point3 a{base + B3, base + B3, base + B3}, b{base - B3, base + B3, base + B3},
+        c{base + B3, base - B3, base + B3}, d{base + B3, base + B3, base - B3};
+    const Answer r = insphere(a, b, c, d, e);
+    REQUIRE(r.known);
+    CHECK(r.sign == mp.insphere(a, b, c, d, e));
+    // Differences 2B from the reference: refused.
+    const Point3 f{base - B3, base - B3, base - B3};
+    CHECK_FALSE(insphere(a, b, c, d, f).known);
+    // One more unit: refused.
+    const Point3 a2{base + B3 + 1, base, base};
+    CHECK_FALSE(insphere(a2, b, c, d, e).known);
+
+    const Point3 oa{base + Bo, base - Bo, base + Bo}, ob{base - Bo, base + Bo, base + Bo},
+        oc{base + Bo, base + Bo, base - Bo};
+    REQUIRE(orient3d(oa, ob, oc, e).known);
+    CHECK(orient3d(oa, ob, oc, e).sign == mp.orient3d(oa, ob, oc, e));
+    CHECK_FALSE(orient3d({base + Bo + 1, base, base}, ob, oc, e).known);
+
+    const Point2 e2{base, base};
+    const Point2 ia{base + Bc, base + Bc}, ib{base - Bc, base + Bc}, ic{base + Bc, base - Bc},
+        id{base - Bc, base - Bc};
+    REQUIRE(incircle(ia, ib, ic, e2).known);
+    CHECK(incircle(ia, ib, ic, e2).sign == mp.incircle(ia, ib, ic, e2));
+    CHECK_FALSE(incircle(ia, ib, ic, id).known);  // differences 2B from id
+    const double h = Bc / 2;  // differences from jd up to 2h = B
+    const Point2 ja{base + h, base}, jb{base, base + h}, jc{base - h, base}, jd{base, base - h};
+    REQUIRE(incircle(ja, jb, jc, jd).known);
+    CHECK(incircle(ja, jb, jc, jd).sign == Sign::zero);  // four points of one circle
+    CHECK_FALSE(incircle({base + Bc + 1, base}, ib, ic, e2).known);
+
+    const Point2 pa{base + B2, base - B2}, pb{base - B2, base + B2 - 2};  // even: see is_int
+    REQUIRE(orient2d(pa, pb, e2).known);
+    CHECK(orient2d(pa, pb, e2).sign == mp.orient2d(pa, pb, e2));
+    CHECK_FALSE(orient2d({base + B2 + 1, base}, pb, e2).known);
+  }
+}
+
+TEST_CASE("small_integer: refuses non-integers, infinities and NaN", "[small_integer]") {
+  using namespace small_integer;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Point3 e{3, 0, 0}, b{0, 1, 0}, c{0, 0, 1}, d{1, 1, 1};
+  // fl(1e-300 - 3) = -3 and fl((1 + 2^-52) - 513) = -512 are integers, but inexact.
+  CHECK_FALSE(insphere({1e-300, 0, 0}, b, c, d, e).known);
+  CHECK_FALSE(insphere({1 + 0x1p-52, 0, 0}, b, c, d, {513, 0, 0}).known);
+  CHECK_FALSE(orient3d({1e-300, 0, 0}, b, c, e).known);
+  CHECK_FALSE(orient2d({1e-300, 0}, {0, 1}, {3, 0}).known);
+  CHECK_FALSE(incircle({1e-300, 0}, {0, 1}, {1, 1}, {3, 0}).known);
+  CHECK_FALSE(insphere({0.5, 0, 0}, b, c, d, e).known);
+  for (double bad : {inf, -inf, nan}) {
+    CHECK_FALSE(insphere({bad, 0, 0}, b, c, d, e).known);
+    CHECK_FALSE(insphere(b, c, d, e, {bad, 0, 0}).known);
+    CHECK_FALSE(insphere({bad, 0, 0}, b, c, d, {bad, 0, 0}).known);
+    CHECK_FALSE(orient3d(b, c, d, {bad, 0, 0}).known);
+    CHECK_FALSE(orient3d({bad, 0, 0}, c, d, {bad, 1, 0}).known);
+    CHECK_FALSE(orient2d({0, 0}, {1, 0}, {bad, bad}).known);
+    CHECK_FALSE(incircle({bad, 0}, {1, 0}, {0, 1}, {bad, 2}).known);
+  }
+  // Coordinates too large for the reference point, or differences too large.
+  CHECK_FALSE(orient3d(b, c, d, {0x1p53, 0, 0}).known);
+  CHECK_FALSE(orient3d({0x1p60, 0, 0}, c, d, {0x1p60 + 0x1p8, 0, 0}).known);
+}
+
+TEST_CASE("small_integer: random lattice points agree with mp", "[small_integer]") {
+  Lattice lat{std::mt19937_64(7), 0, 3};
+  int known = 0, zeros = 0;
+  for (int t = 0; t < 4000; ++t) {
+    // Alternate tight lattices (many exact zeros) and wide ones near the bounds.
+    lat.half = t % 4 == 0 ? 255 : (t % 4 == 1 ? 2 : 1);
+    lat.base = t % 3 == 0 ? 0x1p50 : (t % 3 == 1 ? -1000 : 0);
+    const Point3 a = lat.p3(), b = lat.p3(), c = lat.p3(), d = lat.p3(), e = lat.p3();
+    const auto s = small_integer::insphere(a, b, c, d, e);
+    REQUIRE(s.known);  // |difference| <= 510 < 2^9
+    REQUIRE(s.sign == mp.insphere(a, b, c, d, e));
+    const auto o = small_integer::orient3d(a, b, c, d);
+    REQUIRE(o.known);
+    REQUIRE(o.sign == mp.orient3d(a, b, c, d));
+    const Point2 p = lat.p2(), q = lat.p2(), r = lat.p2(), u = lat.p2();
+    const auto ic = small_integer::incircle(p, q, r, u);
+    REQUIRE(ic.known);
+    REQUIRE(ic.sign == mp.incircle(p, q, r, u));
+    const auto o2 = small_integer::orient2d(p, q, r);
+    REQUIRE(o2.known);
+    REQUIRE(o2.sign == mp.orient2d(p, q, r));
+    known += 4;
+    zeros += (s.sign == Sign::zero) + (ic.sign == Sign::zero);
+  }
+  CHECK(known == 16000);
+  CHECK(zeros > 300);  // the tight lattices really are degenerate
+}
+
+TEST_CASE("perturbed<adaptive> on lattices equals perturbed<mp>", "[small_integer][perturbed]") {
+  const perturbed<AdaptiveKernel> ad;
+  const perturbed<MpKernel> pm;
+  Lattice lat{std::mt19937_64(11), 0, 1};
+  int perturbation = 0;
+  for (int t = 0; t < 3000; ++t) {
+    lat.base = t % 2 ? 0 : 1000;
+    const Point3 a = lat.p3(), b = lat.p3(), c = lat.p3(), d = lat.p3(), e = lat.p3();
+    REQUIRE(ad.insphere(a, b, c, d, e) == pm.insphere(a, b, c, d, e));
+    REQUIRE(ad.orient3d(a, b, c, d) == pm.orient3d(a, b, c, d));
+    const Staged st = ad.insphere_staged(a, b, c, d, e);
+    REQUIRE(st.sign == ad.insphere(a, b, c, d, e));
+    // A zero-volume query (coplanar, repeated points) stays outside the contract;
+    // for distinct non-coplanar a, b, c, d the perturbation answers exactly the zeros.
+    if (mp.orient3d(a, b, c, d) != Sign::zero) {
+      const bool zero = mp.insphere(a, b, c, d, e) == Sign::zero;
+      REQUIRE((st.stage == perturbed<AdaptiveKernel>::perturbation_stage) == zero);
+      perturbation += zero;
+    }
+    if (mp.orient2d({a[0], a[1]}, {b[0], b[1]}, {c[0], c[1]}) != Sign::zero) {
+      const Point3 pa{a[0], a[1], 5}, pb{b[0], b[1], 5}, pc{c[0], c[1], 5}, pp{d[0], d[1], 5};
+      if (pp != pa && pp != pb && pp != pc)
+        REQUIRE(ad.coplanar_incircle(pa, pb, pc, pp) == pm.coplanar_incircle(pa, pb, pc, pp));
+    }
+    const Point2 p = lat.p2(), q = lat.p2(), r = lat.p2(), u = lat.p2();
+    REQUIRE(ad.incircle(p, q, r, u) == pm.incircle(p, q, r, u));
+    REQUIRE(ad.orient2d(p, q, r) == pm.orient2d(p, q, r));
+  }
+  CHECK(perturbation > 50);
+  // Off-lattice points still go through the adaptive stages (same answers).
+  const Point3 a{0.5, 0, 0}, b{0, 0.5, 0}, c{0, 0, 0.5}, d{0, 0, 0}, e{0.5, 0.5, 0.5};
+  CHECK(ad.insphere(a, b, c, d, e) == pm.insphere(a, b, c, d, e));
+  CHECK(ad.insphere_staged(a, b, c, d, e).stage == perturbed<AdaptiveKernel>::perturbation_stage);
+}
+
+TEST_CASE("small_integer: the symbolic walk equals perturbed<mp>, ties included", "[small_integer]") {
+  const perturbed<MpKernel> pm;
+  Lattice lat{std::mt19937_64(5), 0, 1};
+  int walked = 0;
+  for (int t = 0; t < 4000; ++t) {
+    lat.base = t % 3 == 0 ? -0x1p40 : 7;
+    lat.half = t % 5 == 0 ? 255 : 1;
+    std::array<Point3, 5> q{lat.p3(), lat.p3(), lat.p3(), lat.p3(), lat.p3()};
+    if (t % 7 == 0) q[4] = q[t % 4];  // a repeated point: ties in the ranks
+    const auto r = small_integer::insphere_sos(q[0], q[1], q[2], q[3], q[4]);
+    REQUIRE(r.known);
+    REQUIRE(r.sign == pm.insphere(q[0], q[1], q[2], q[3], q[4]));
+    REQUIRE(r.by_perturbation == (mp.insphere(q[0], q[1], q[2], q[3], q[4]) == Sign::zero));
+    walked += r.by_perturbation;
+    std::array<Point2, 4> p{lat.p2(), lat.p2(), lat.p2(), lat.p2()};
+    if (t % 7 == 1) p[3] = p[t % 3];
+    const auto s = small_integer::incircle_sos(p[0], p[1], p[2], p[3]);
+    REQUIRE(s.known);
+    REQUIRE(s.sign == pm.incircle(p[0], p[1], p[2], p[3]));
+    REQUIRE(s.by_perturbation == (mp.incircle(p[0], p[1], p[2], p[3]) == Sign::zero));
+    walked += s.by_perturbation;
+  }
+  CHECK(walked > 500);
+  // Not certified: off the lattice, or differences beyond the budget.
+  CHECK_FALSE(small_integer::insphere_sos({0.5, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {0, 0, 0}).known);
+  CHECK_FALSE(small_integer::insphere_sos({513, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {0, 0, 0}).known);
+  CHECK(small_integer::insphere_sos({512, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {0, 0, 0}).known);
+  CHECK_FALSE(small_integer::incircle_sos({4097, 0}, {0, 1}, {1, 1}, {0, 0}).known);
+  CHECK(small_integer::incircle_sos({4096, 0}, {0, 1}, {1, 1}, {0, 0}).known);
+}
