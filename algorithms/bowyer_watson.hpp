@@ -195,21 +195,8 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   merged_.assign(n, kNotProcessed);
   mesh_.clear();
 
-  const InitialSimplex<D> init = find_initial_simplex<D>(k_, pts);
-  if (!init.found) {
-    res.outcome = RunResult::Outcome::lower_dimensional;
-    res.message = init.why;
-    if constexpr (!K::exact) {
-      // An inexact kernel can see flat what is not (overflow, cancellation):
-      // confirm with the exact kernel, else report the kernel's failure.
-      if (find_initial_simplex<D>(MpKernel{}, pts).found) {
-        res.outcome = RunResult::Outcome::failed;
-        res.message = "the " + std::string(K::name) + " kernel sees the input as lower-dimensional (" +
-                      init.why + "), but it is not";
-      }
-    }
-    return res;
-  }
+  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
+  if (!init.found) return res;
   // Simplices including ghosts: exactly 2n - 2 in 2D (a triangulated sphere
   // on n + 1 vertices); in 3D about 6.75n for uniform points (measured; Dwyer
   // 1991 gives 6.77n in a ball), so 7n avoids a reallocation (which would

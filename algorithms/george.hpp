@@ -435,12 +435,8 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   merged_.assign(n, kNotProcessed);
   mesh_.clear();
   spheres_.clear();
-  const InitialSimplex<D> init = find_initial_simplex<D>(k_, pts);
-  if (!init.found) {
-    res.outcome = RunResult::Outcome::lower_dimensional;
-    res.message = init.why;
-    return res;
-  }
+  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
+  if (!init.found) return res;
   mesh_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
   spheres_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
   if (opt_.enclosing_box) {

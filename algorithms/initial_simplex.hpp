@@ -16,6 +16,7 @@
 
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
+#include "algorithms/triangulation_result.hpp"
 #include "predicates/mp_kernel.hpp"
 
 namespace dlab {
@@ -93,6 +94,26 @@ InitialSimplex<D> find_initial_simplex(const K& k, std::span<const Point<D>> pts
 // Builds the initial closed mesh on a positively oriented simplex `ids`: the
 // finite simplex and, for each of its facets, a ghost simplex on the outside.
 // Returns the id of the finite simplex.
+// The first simplex of a run, or, when there is none, the run's outcome in
+// `res`: lower-dimensional, or failed when an inexact kernel sees flat what the
+// exact one does not (overflow, cancellation).
+template <int D, class K>
+InitialSimplex<D> initial_simplex_or_outcome(const K& k, std::span<const Point<D>> pts,
+                                             TriangulationResult& res) {
+  InitialSimplex<D> init = find_initial_simplex<D>(k, pts);
+  if (init.found) return init;
+  res.outcome = RunResult::Outcome::lower_dimensional;
+  res.message = init.why;
+  if constexpr (!K::exact) {
+    if (find_initial_simplex<D>(MpKernel{}, pts).found) {
+      res.outcome = RunResult::Outcome::failed;
+      res.message = "the " + std::string(K::name) + " kernel sees the input as lower-dimensional (" +
+                    init.why + "), but it is not";
+    }
+  }
+  return init;
+}
+
 template <int D>
 std::uint32_t build_initial_mesh(Mesh<D>& m, const std::array<std::uint32_t, D + 1>& ids) {
   constexpr int V = D + 1;

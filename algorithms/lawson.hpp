@@ -361,19 +361,8 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   mesh_.clear();
   flip_budget_ = flip_bound(n, K::exact);
 
-  const InitialSimplex<D> init = find_initial_simplex<D>(k_, pts);
-  if (!init.found) {
-    res.outcome = RunResult::Outcome::lower_dimensional;
-    res.message = init.why;
-    if constexpr (!K::exact) {
-      if (find_initial_simplex<D>(MpKernel{}, pts).found) {
-        res.outcome = RunResult::Outcome::failed;
-        res.message = "the " + std::string(K::name) + " kernel sees the input as lower-dimensional (" +
-                      init.why + "), but it is not";
-      }
-    }
-    return res;
-  }
+  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
+  if (!init.found) return res;
   mesh_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
   last_ = build_initial_mesh<D>(mesh_, init.ids);
   for (std::uint32_t id : init.ids) merged_[id] = id;

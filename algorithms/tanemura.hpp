@@ -439,19 +439,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   const std::size_t n = pts.size();
   std::vector<std::uint32_t> merged(n, kNotProcessed);
 
-  const InitialSimplex<D> init = find_initial_simplex<D>(k_, pts);
-  if (!init.found) {
-    res.outcome = RunResult::Outcome::lower_dimensional;
-    res.message = init.why;
-    if constexpr (!K::exact) {
-      if (find_initial_simplex<D>(MpKernel{}, pts).found) {
-        res.outcome = RunResult::Outcome::failed;
-        res.message = "the " + std::string(K::name) + " kernel sees the input as lower-dimensional (" +
-                      init.why + "), but it is not";
-      }
-    }
-    return res;
-  }
+  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
+  if (!init.found) return res;
 
   // Duplicates: lexicographic sort; each group maps to its first id.
   std::vector<std::uint32_t> order(n);
