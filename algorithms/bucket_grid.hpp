@@ -170,6 +170,7 @@ class BucketGrid {
   }
 
   int cells(int axis) const { return n_[axis]; }
+  int max_cells() const { return *std::max_element(n_.begin(), n_.end()); }
   int blocks(int axis) const { return nb_[axis]; }
   std::size_t cell_count() const { return start_.size() - 1; }
   std::size_t block_count() const { return bcount_.size(); }

@@ -369,23 +369,44 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     scan_range(f, all_lo, all_hi, false, true);
     if (best_ == kNone) return kNone;  // every block that may hold an outer point was scanned
   }
-  // Phase 2: one pass over the cells that can meet the circumsphere of (f,
-  // best). A better candidate d lies inside it, on the open side; its own
-  // sphere's open-side part is inside the old one's (same pencil, smaller
-  // offset), so the first range covers every later improvement, and blocks
-  // are pruned against the current sphere.
+  // Phase 2: the cells that can meet the circumsphere of (f, best). A better
+  // candidate d lies inside it, on the open side; its own sphere's open-side
+  // part is inside the old one's (same pencil, smaller offset), so the range
+  // of the CURRENT sphere always covers every later improvement. The range is
+  // scanned in growing boxes around the facet, each clipped to the current
+  // range: the apex is usually near the facet, and each improvement shrinks
+  // the range (a poor first candidate, nearly coplanar with f, has a huge
+  // sphere). Scanned cells are stamped, never examined twice; blocks are
+  // pruned against the current sphere. Ends when a box holds the whole range
+  // (at most one box per cell row).
   ++improvements_;
   ball_ = ball_of(f, best_);
-  std::array<int, D> lo = all_lo, hi = all_hi;
-  if (ball_.bounded) {
-    const double r = sqrt_up(ball_.r2);
-    for (int i = 0; i < D; ++i) {
-      lo[i] = grid_.cell_of_scaled(i, Iv::down(ball_.centre[i].lo - r));
-      hi[i] = grid_.cell_of_scaled(i, Iv::up(ball_.centre[i].hi + r));
-    }
-  }
   changed_ = false;
-  scan_range(f, lo, hi, true, false);
+  for (int ring = 0;; ++ring) {
+    std::array<int, D> lo = all_lo, hi = all_hi;
+    if (ball_.bounded) {
+      const double r = sqrt_up(ball_.r2);
+      for (int i = 0; i < D; ++i) {
+        lo[i] = grid_.cell_of_scaled(i, Iv::down(ball_.centre[i].lo - r));
+        hi[i] = grid_.cell_of_scaled(i, Iv::up(ball_.centre[i].hi + r));
+      }
+    }
+    bool covered = true;
+    std::array<int, D> blo, bhi;
+    for (int i = 0; i < D; ++i) {
+      blo[i] = std::max(lo[i], flo[i] - ring);
+      bhi[i] = std::min(hi[i], fhi[i] + ring);
+      covered &= blo[i] == lo[i] && bhi[i] == hi[i];
+      if (blo[i] > bhi[i]) covered = false;
+    }
+    if (covered || ring > grid_.max_cells()) {
+      scan_range(f, lo, hi, true, false);
+      break;
+    }
+    bool empty = false;
+    for (int i = 0; i < D; ++i) empty |= blo[i] > bhi[i];
+    if (!empty) scan_range(f, blo, bhi, true, false);
+  }
   return best_;
 }
 
