@@ -13,6 +13,7 @@
 //   - float / epsilon: an outcome, never a throw or a hang;
 //   - the bucket grid keeps the points examined per facet bounded on uniform input;
 //   - the interval widening equals nextafter; the facet table agrees with std::map.
+#include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -337,4 +338,39 @@ TEST_CASE("tanemura: interval widening is nextafter; the facet table matches std
   }
   CHECK(FacetTable<3>::same_orientation({1, 2, 3}, {2, 3, 1}));
   CHECK(!FacetTable<3>::same_orientation({1, 2, 3}, {2, 1, 3}));
+}
+
+// The pruning keeps a point interval only when a rounded sum / product is
+// exact (algorithms/interval.hpp). A false "exact" would make the search prune
+// a box that holds the apex; checked against rationals, on random doubles of
+// mixed magnitudes (mostly inexact) and on small integers and their binary
+// scalings (always exact: the claim must then be made).
+TEST_CASE("tanemura: interval exactness claims agree with rational arithmetic", "[tanemura]") {
+  using Q = boost::multiprecision::mpq_rational;
+  std::mt19937_64 g(7);
+  auto value = [&](int kind) {
+    if (kind == 0) return std::ldexp(static_cast<double>(static_cast<std::int64_t>(g() % 2001) - 1000), static_cast<int>(g() % 41) - 20);
+    const double m = static_cast<double>(g() >> 11) * 0x1p-53;
+    return std::ldexp(g() % 2 ? m : -m, static_cast<int>(g() % 200) - 100);
+  };
+  int exact_products = 0, exact_sums = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const int kind = static_cast<int>(g() % 2);
+    const double a = value(kind), b = value(kind);
+    const double p = a * b, s = a + b;
+    const bool p_exact = Q(a) * Q(b) == Q(p), s_exact = Q(a) + Q(b) == Q(s);
+    REQUIRE((!Iv::product_is_exact(a, b, p) || p_exact));  // never claims a wrong "exact"
+    REQUIRE(Iv::sum_is_exact(a, b, s) == s_exact);
+    if (kind == 0) REQUIRE(Iv::product_is_exact(a, b, p));  // small integers: exact and seen so
+    exact_products += p_exact;
+    exact_sums += s_exact;
+  }
+  CHECK(exact_products > 40000);
+  CHECK(exact_sums > 40000);
+  // Outside the checked range the claim is withheld, even when exact.
+  CHECK(!Iv::product_is_exact(0x1p-600, 0x1p-400, 0x1p-1000));
+  CHECK(Iv::product_is_exact(0.0, 3.5, 0.0));
+  const Iv u = tight_mul(Iv::exact(3), Iv::exact(0.5)), w = tight_mul(Iv::exact(0.1), Iv::exact(0.3));
+  CHECK((u.lo == 1.5 && u.hi == 1.5));
+  CHECK((w.lo < w.hi && Q(w.lo) < Q(0.1) * Q(0.3) && Q(0.1) * Q(0.3) < Q(w.hi)));
 }
