@@ -10,6 +10,8 @@
 // For the adaptive kernel, counters give the share of calls each stage answered.
 // --dlab_tight=PRED/KERNEL[/PASSES[/SET]] runs the same loop body without Google
 // Benchmark, in one function (tight_pass) for callgrind: see the comment there.
+// --dlab_ratio=ROUNDS prints adaptive / float per predicate from interleaved tight
+// passes.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include <cstdio>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <random>
 #include <string>
@@ -193,20 +196,57 @@ template <class K, Pred P>
   return acc;
 }
 
+// The fastest of `passes` timed passes over `in`, in ns per call; adds the signs to *sum.
 template <class K, Pred P>
-int run_tight(Set set, int passes) {
-  const Inputs in = make_set(P, set);
+double best_pass(const Inputs& in, int passes, long* sum) {
   const K k{};
-  long sum = 0;
   double best = 1e300;
   for (int p = 0; p < passes; ++p) {
     const auto t0 = std::chrono::steady_clock::now();
-    sum += tight_pass<K, P>(k, in);
+    *sum += tight_pass<K, P>(k, in);
     const auto t1 = std::chrono::steady_clock::now();
     best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() / kCalls);
   }
+  return best;
+}
+
+template <class K, Pred P>
+int run_tight(Set set, int passes) {
+  const Inputs in = make_set(P, set);
+  long sum = 0;
+  const double best = best_pass<K, P>(in, passes, &sum);
   std::printf("tight %s: best of %d passes %.3f ns/call (sum of signs %ld)\n",
               std::string(K::name).c_str(), passes, best, sum);
+  return 0;
+}
+
+// ---- Ratio (--dlab_ratio=ROUNDS) ---------------------------------------------------
+// adaptive / float on random inputs, per predicate: ROUNDS rounds, each a best-of-20
+// pass of float then one of adaptive (interleaved, so that a change in the machine's
+// load or clock hits both kernels alike); the minimum per kernel.
+template <Pred P>
+void ratio_row(const char* name, int rounds) {
+  const Inputs in = make_set(P, kRandom);
+  long sum_float = 0, sum_adaptive = 0;
+  double t_float = 1e300, t_adaptive = 1e300;
+  for (int r = 0; r < rounds; ++r) {
+    t_float = std::min(t_float, best_pass<FloatKernel, P>(in, 20, &sum_float));
+    t_adaptive = std::min(t_adaptive, best_pass<AdaptiveKernel, P>(in, 20, &sum_adaptive));
+  }
+  std::printf("| %s | %.2f | %.2f | %.2f |\n", name, t_float, t_adaptive, t_adaptive / t_float);
+}
+
+int ratio(const std::string& arg) {
+  const int rounds = std::atoi(arg.c_str());
+  if (rounds < 1) {
+    std::fprintf(stderr, "bad --dlab_ratio=%s (a number of rounds)\n", arg.c_str());
+    return 2;
+  }
+  std::printf("| predicate | float ns | adaptive ns | adaptive / float |\n|---|---:|---:|---:|\n");
+  ratio_row<kOrient2d>("orient2d", rounds);
+  ratio_row<kIncircle>("incircle", rounds);
+  ratio_row<kOrient3d>("orient3d", rounds);
+  ratio_row<kInsphere>("insphere", rounds);
   return 0;
 }
 
@@ -268,6 +308,7 @@ int main(int argc, char** argv) {
   for (int j = 1; j < argc; ++j) {
     const std::string a = argv[j];
     if (a.rfind("--dlab_tight=", 0) == 0) return tight(a.substr(13));
+    if (a.rfind("--dlab_ratio=", 0) == 0) return ratio(a.substr(13));
   }
   register_kernel<FloatKernel>();
   register_kernel<AdaptiveKernel>();

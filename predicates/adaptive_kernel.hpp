@@ -235,12 +235,19 @@ struct AdaptiveKernel {
   static constexpr std::array<std::string_view, 6> stage_names = {"filter", "A", "B",
                                                                   "C",      "D", "mp"};
 
+  // X_first_then(points, rest): the inline first stage, and rest(points) when it
+  // cannot decide; X_rest: the stages after it; X_staged: both.
+  // perturbed<AdaptiveKernel> puts its small-integer evaluation between the two
+  // (predicates/perturbed.hpp).
+  //
   // orient2d has no semi-static filter: Shewchuk's stage A (bound o2A times the
   // permanent |dl| + |dr|) is as cheap and sharper. Two refinements
   // (error_bounds.md 4.6): |dl + dr| replaces |dl| + |dr| (equal when the signs
   // agree; when they differ the sign of det is exact anyway), and the additive
   // 2^-1072 absorbs gradual-underflow crumbs (o2_fast carries the extra rounding).
-  static Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) {
+  template <class Rest>
+  static Staged orient2d_first_then(const Point2& a, const Point2& b, const Point2& c,
+                                    Rest rest) {
     const double acx = a[0] - c[0], bcx = b[0] - c[0];
     const double acy = a[1] - c[1], bcy = b[1] - c[1];
     const double dl = acx * bcy, dr = acy * bcx;
@@ -248,11 +255,12 @@ struct AdaptiveKernel {
     const double bound = adaptive::o2_fast * std::fabs(dl + dr) + adaptive::o2_fast_abs;
     if (det > bound) return {Sign::positive, adaptive::stage_a};
     if (-det > bound) return {Sign::negative, adaptive::stage_a};
-    return adaptive::orient2d_slow(a, b, c);
+    return rest(a, b, c);
   }
 
-  static Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c,
-                                const Point2& d) {
+  template <class Rest>
+  static Staged incircle_first_then(const Point2& a, const Point2& b, const Point2& c,
+                                    const Point2& d, Rest rest) {
     const double adx = a[0] - d[0], ady = a[1] - d[1];
     const double bdx = b[0] - d[0], bdy = b[1] - d[1];
     const double cdx = c[0] - d[0], cdy = c[1] - d[1];
@@ -269,21 +277,23 @@ struct AdaptiveKernel {
     const double bound = adaptive::ic_lift_filter * (lifts * lifts);
     if (det > bound) return {Sign::positive, adaptive::stage_filter};
     if (-det > bound) return {Sign::negative, adaptive::stage_filter};
-    return adaptive::incircle_slow(a, b, c, d);
+    return rest(a, b, c, d);
   }
 
   // orient3d: the per-axis filter of error_bounds.md 3.4. If an intermediate of det
   // overflowed, the bound is +inf (or det NaN): both tests fail.
-  static Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c,
-                                const Point3& d) {
+  template <class Rest>
+  static Staged orient3d_first_then(const Point3& a, const Point3& b, const Point3& c,
+                                    const Point3& d, Rest rest) {
     const adaptive::DetBound f = adaptive::orient3d_filter(a, b, c, d);
     if (f.det > f.bound) return {Sign::positive, adaptive::stage_filter};
     if (-f.det > f.bound) return {Sign::negative, adaptive::stage_filter};
-    return adaptive::orient3d_slow(a, b, c, d);
+    return rest(a, b, c, d);
   }
 
-  static Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c,
-                                const Point3& d, const Point3& e) {
+  template <class Rest>
+  static Staged insphere_first_then(const Point3& a, const Point3& b, const Point3& c,
+                                    const Point3& d, const Point3& e, Rest rest) {
     const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
     const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
     const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
@@ -314,7 +324,42 @@ struct AdaptiveKernel {
     const double bound = adaptive::is_filter128 * (((((mx * 128) * my) * mz) * mm) * mm);
     if (det > bound) return {Sign::positive, adaptive::stage_filter};
     if (-det > bound) return {Sign::negative, adaptive::stage_filter};
+    return rest(a, b, c, d, e);
+  }
+
+  // The stages after the first (out of line), and the whole predicate.
+  static Staged orient2d_rest(const Point2& a, const Point2& b, const Point2& c) {
+    return adaptive::orient2d_slow(a, b, c);
+  }
+  static Staged incircle_rest(const Point2& a, const Point2& b, const Point2& c,
+                              const Point2& d) {
+    return adaptive::incircle_slow(a, b, c, d);
+  }
+  static Staged orient3d_rest(const Point3& a, const Point3& b, const Point3& c,
+                              const Point3& d) {
+    return adaptive::orient3d_slow(a, b, c, d);
+  }
+  static Staged insphere_rest(const Point3& a, const Point3& b, const Point3& c,
+                              const Point3& d, const Point3& e) {
     return adaptive::insphere_slow(a, b, c, d, e);
+  }
+  // (A lambda, not the function's address: the fast path then compiles exactly as
+  // when the stages were one function -- one instruction fewer per orient3d call.)
+  static Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) {
+    return orient2d_first_then(a, b, c, [](const auto&... p) { return orient2d_rest(p...); });
+  }
+  static Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c,
+                                const Point2& d) {
+    return incircle_first_then(a, b, c, d, [](const auto&... p) { return incircle_rest(p...); });
+  }
+  static Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d) {
+    return orient3d_first_then(a, b, c, d, [](const auto&... p) { return orient3d_rest(p...); });
+  }
+  static Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d, const Point3& e) {
+    return insphere_first_then(a, b, c, d, e,
+                               [](const auto&... p) { return insphere_rest(p...); });
   }
 
   Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const {

@@ -45,10 +45,11 @@
 // K must be exact for the answers to mean anything (perturbing an inexact
 // zero is meaningless); perturbed<K> never changes a non-zero answer of K.
 //
-// Lattices: for K = adaptive, every predicate first tries the error-free
-// small-integer evaluation of predicates/small_integer.hpp (all coordinates
-// integers, all differences small: the determinant computed in doubles is
-// exact). When it applies, its sign is the answer -- reported as K's stage 0
+// Lattices: for K = adaptive, when K's inline first stage (its filter) cannot
+// decide, every predicate tries the error-free small-integer evaluation of
+// predicates/small_integer.hpp (all coordinates integers, all differences
+// small: the determinant computed in doubles is exact) before K's remaining
+// stages. When it applies, its sign is the answer -- reported as K's stage 0
 // ("filter") when non-zero -- and an exact zero is settled by the same walk on
 // the same certificate (small_integer::incircle_sos / insphere_sos, counted as
 // "perturbation"), without the expansion arithmetic that stages B-D would
@@ -259,14 +260,19 @@ struct perturbed {
                          const Point2& d) const
     requires Kernel2<K>
   {
+    Staged s;
     if constexpr (lattice) {  // exact sign and perturbation in one go (small_integer.hpp)
-      const small_integer::SosAnswer r = small_integer::is_int(d[0])  // cheap, inline pre-test
-                                             ? small_integer::incircle_sos(a, b, c, d)
-                                             : small_integer::SosAnswer{false, Sign::zero, false};
-      if (r.known)
-        return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
+      s = K::incircle_first_then(
+          a, b, c, d, [](const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+            if (small_integer::is_int(d[0])) {  // cheap pre-test
+              const small_integer::SosAnswer r = small_integer::incircle_sos(a, b, c, d);
+              if (r.known) return sos_staged(r);
+            }
+            return K::incircle_rest(a, b, c, d);
+          });
+    } else {
+      s = dlab::incircle_staged(base, a, b, c, d);
     }
-    const Staged s = dlab::incircle_staged(base, a, b, c, d);
     if (s.sign != Sign::zero) return s;
     return {incircle_perturbation(a, b, c, d), static_cast<unsigned char>(perturbation_stage)};
   }
@@ -280,14 +286,20 @@ struct perturbed {
                          const Point3& e) const
     requires Kernel3<K>
   {
+    Staged s;
     if constexpr (lattice) {
-      const small_integer::SosAnswer r = small_integer::is_int(e[0])
-                                             ? small_integer::insphere_sos(a, b, c, d, e)
-                                             : small_integer::SosAnswer{false, Sign::zero, false};
-      if (r.known)
-        return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
+      s = K::insphere_first_then(
+          a, b, c, d, e,
+          [](const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
+            if (small_integer::is_int(e[0])) {
+              const small_integer::SosAnswer r = small_integer::insphere_sos(a, b, c, d, e);
+              if (r.known) return sos_staged(r);
+            }
+            return K::insphere_rest(a, b, c, d, e);
+          });
+    } else {
+      s = dlab::insphere_staged(base, a, b, c, d, e);
     }
-    const Staged s = dlab::insphere_staged(base, a, b, c, d, e);
     if (s.sign != Sign::zero) return s;
     return {insphere_perturbation(a, b, c, d, e), static_cast<unsigned char>(perturbation_stage)};
   }
@@ -296,33 +308,47 @@ struct perturbed {
   // Kernels exact for every double input, for which the small-integer
   // evaluation may answer in K's place (see the top of this file).
   static constexpr bool lattice = std::is_same_v<K, AdaptiveKernel>;
+  // A small-integer answer: a non-zero sign is reported as K's stage 0, a sign
+  // settled by the walk as the perturbation stage.
+  static Staged sos_staged(const small_integer::SosAnswer& r) {
+    return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
+  }
 
   // K's exact sign and stage, from the small-integer evaluation when it applies.
   Staged orient2d_base(const Point2& a, const Point2& b, const Point2& c) const {
     if constexpr (lattice) {
-      if (small_integer::is_int(c[0])) {
-        const small_integer::Answer r = small_integer::orient2d(a, b, c);
-        if (r.known) return {r.sign, 0};
-      }
+      return K::orient2d_first_then(a, b, c, [](const Point2& a, const Point2& b, const Point2& c) {
+        if (small_integer::is_int(c[0])) {
+          const small_integer::Answer r = small_integer::orient2d(a, b, c);
+          if (r.known) return Staged{r.sign, 0};
+        }
+        return K::orient2d_rest(a, b, c);
+      });
     }
     return dlab::orient2d_staged(base, a, b, c);
   }
   Staged orient3d_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
     if constexpr (lattice) {
-      if (small_integer::is_int(d[0])) {
-        const small_integer::Answer r = small_integer::orient3d(a, b, c, d);
-        if (r.known) return {r.sign, 0};
-      }
+      return K::orient3d_first_then(a, b, c, d, [](const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+        if (small_integer::is_int(d[0])) {
+          const small_integer::Answer r = small_integer::orient3d(a, b, c, d);
+          if (r.known) return Staged{r.sign, 0};
+        }
+        return K::orient3d_rest(a, b, c, d);
+      });
     }
     return dlab::orient3d_staged(base, a, b, c, d);
   }
   Staged insphere_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                        const Point3& e) const {
     if constexpr (lattice) {
-      if (small_integer::is_int(e[0])) {
-        const small_integer::Answer r = small_integer::insphere(a, b, c, d, e);
-        if (r.known) return {r.sign, 0};
-      }
+      return K::insphere_first_then(a, b, c, d, e, [](const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
+        if (small_integer::is_int(e[0])) {
+          const small_integer::Answer r = small_integer::insphere(a, b, c, d, e);
+          if (r.known) return Staged{r.sign, 0};
+        }
+        return K::insphere_rest(a, b, c, d, e);
+      });
     }
     return dlab::insphere_staged(base, a, b, c, d, e);
   }
