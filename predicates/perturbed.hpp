@@ -262,14 +262,8 @@ struct perturbed {
   {
     Staged s;
     if constexpr (lattice) {  // exact sign and perturbation in one go (small_integer.hpp)
-      s = K::incircle_first_then(
-          a, b, c, d, [](const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-            if (small_integer::is_int(d[0])) {  // cheap pre-test
-              const small_integer::SosAnswer r = small_integer::incircle_sos(a, b, c, d);
-              if (r.known) return sos_staged(r);
-            }
-            return K::incircle_rest(a, b, c, d);
-          });
+      s = K::incircle_first_then(a, b, c, d,
+                                 [](const auto&... p) { return incircle_lattice(p...); });
     } else {
       s = dlab::incircle_staged(base, a, b, c, d);
     }
@@ -288,15 +282,8 @@ struct perturbed {
   {
     Staged s;
     if constexpr (lattice) {
-      s = K::insphere_first_then(
-          a, b, c, d, e,
-          [](const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-            if (small_integer::is_int(e[0])) {
-              const small_integer::SosAnswer r = small_integer::insphere_sos(a, b, c, d, e);
-              if (r.known) return sos_staged(r);
-            }
-            return K::insphere_rest(a, b, c, d, e);
-          });
+      s = K::insphere_first_then(a, b, c, d, e,
+                                 [](const auto&... p) { return insphere_lattice(p...); });
     } else {
       s = dlab::insphere_staged(base, a, b, c, d, e);
     }
@@ -308,48 +295,66 @@ struct perturbed {
   // Kernels exact for every double input, for which the small-integer
   // evaluation may answer in K's place (see the top of this file).
   static constexpr bool lattice = std::is_same_v<K, AdaptiveKernel>;
-  // A small-integer answer: a non-zero sign is reported as K's stage 0, a sign
-  // settled by the walk as the perturbation stage.
+
+  // When K's first stage cannot decide: the small-integer evaluation, then K's
+  // remaining stages. Out of line, so that the inline path stays K's first stage
+  // alone. A non-zero small-integer sign is reported as K's stage 0, a sign settled
+  // by the walk (*_sos) as the perturbation stage.
+  [[gnu::noinline]] static Staged orient2d_lattice(const Point2& a, const Point2& b,
+                                                   const Point2& c) {
+    if (small_integer::is_int(c[0])) {
+      const small_integer::Answer r = small_integer::orient2d(a, b, c);
+      if (r.known) return {r.sign, 0};
+    }
+    return K::orient2d_rest(a, b, c);
+  }
+  [[gnu::noinline]] static Staged incircle_lattice(const Point2& a, const Point2& b,
+                                                   const Point2& c, const Point2& d) {
+    if (small_integer::is_int(d[0])) {
+      const small_integer::SosAnswer r = small_integer::incircle_sos(a, b, c, d);
+      if (r.known) return sos_staged(r);
+    }
+    return K::incircle_rest(a, b, c, d);
+  }
+  [[gnu::noinline]] static Staged orient3d_lattice(const Point3& a, const Point3& b,
+                                                   const Point3& c, const Point3& d) {
+    if (small_integer::is_int(d[0])) {
+      const small_integer::Answer r = small_integer::orient3d(a, b, c, d);
+      if (r.known) return {r.sign, 0};
+    }
+    return K::orient3d_rest(a, b, c, d);
+  }
+  [[gnu::noinline]] static Staged insphere_lattice(const Point3& a, const Point3& b,
+                                                   const Point3& c, const Point3& d,
+                                                   const Point3& e) {
+    if (small_integer::is_int(e[0])) {
+      const small_integer::SosAnswer r = small_integer::insphere_sos(a, b, c, d, e);
+      if (r.known) return sos_staged(r);
+    }
+    return K::insphere_rest(a, b, c, d, e);
+  }
   static Staged sos_staged(const small_integer::SosAnswer& r) {
     return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
   }
 
   // K's exact sign and stage, from the small-integer evaluation when it applies.
   Staged orient2d_base(const Point2& a, const Point2& b, const Point2& c) const {
-    if constexpr (lattice) {
-      return K::orient2d_first_then(a, b, c, [](const Point2& a, const Point2& b, const Point2& c) {
-        if (small_integer::is_int(c[0])) {
-          const small_integer::Answer r = small_integer::orient2d(a, b, c);
-          if (r.known) return Staged{r.sign, 0};
-        }
-        return K::orient2d_rest(a, b, c);
-      });
-    }
+    if constexpr (lattice)
+      return K::orient2d_first_then(a, b, c,
+                                  [](const auto&... p) { return orient2d_lattice(p...); });
     return dlab::orient2d_staged(base, a, b, c);
   }
   Staged orient3d_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
-    if constexpr (lattice) {
-      return K::orient3d_first_then(a, b, c, d, [](const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-        if (small_integer::is_int(d[0])) {
-          const small_integer::Answer r = small_integer::orient3d(a, b, c, d);
-          if (r.known) return Staged{r.sign, 0};
-        }
-        return K::orient3d_rest(a, b, c, d);
-      });
-    }
+    if constexpr (lattice)
+      return K::orient3d_first_then(a, b, c, d,
+                                  [](const auto&... p) { return orient3d_lattice(p...); });
     return dlab::orient3d_staged(base, a, b, c, d);
   }
   Staged insphere_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                        const Point3& e) const {
-    if constexpr (lattice) {
-      return K::insphere_first_then(a, b, c, d, e, [](const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-        if (small_integer::is_int(e[0])) {
-          const small_integer::Answer r = small_integer::insphere(a, b, c, d, e);
-          if (r.known) return Staged{r.sign, 0};
-        }
-        return K::insphere_rest(a, b, c, d, e);
-      });
-    }
+    if constexpr (lattice)
+      return K::insphere_first_then(a, b, c, d, e,
+                                  [](const auto&... p) { return insphere_lattice(p...); });
     return dlab::insphere_staged(base, a, b, c, d, e);
   }
 
