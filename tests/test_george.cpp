@@ -108,6 +108,27 @@ TEST_CASE("george: coplanar and kettner inputs stay valid", "[george]") {
   }
 }
 
+// The inexact baselines (variants/george_float.cpp, george_epsilon.cpp): on easy
+// input the volumes are right and the result is valid; on the hard generators any
+// outcome is allowed except a crash, a hang or an unexplained failure.
+TEST_CASE("george: inexact kernels never crash; on easy inputs they are valid", "[george]") {
+  for (const std::string kernel : {"float", "epsilon"}) {
+    for (int dim : {2, 3}) {
+      const RunResult easy = george(make_points("uniform", dim, dim == 2 ? 1000 : 400, 5), kernel);
+      INFO(kernel << " " << dim << "D uniform: " << easy.message);
+      REQUIRE(easy.outcome == RunResult::Outcome::ok);
+      CHECK(validate(easy.points, easy.simplices).valid());
+      for (const char* name : kGenerators) {
+        const RunResult r = george(make_points(name, dim, dim == 2 ? 600 : 300, 9), kernel);
+        INFO(kernel << " " << dim << "D " << name << ": " << r.message);
+        if (r.outcome == RunResult::Outcome::failed) CHECK(!r.message.empty());
+        if (r.outcome == RunResult::Outcome::ok)  // what the registry says of it is the truth
+          CHECK(counter(r, "valid") == (validate(r.points, r.simplices).valid() ? 1u : 0u));
+      }
+    }
+  }
+}
+
 TEST_CASE("george: the correction runs where the floating test errs, and repairs", "[george]") {
   // 3D lattices are full of cospherical ties: the floating test gets many
   // wrong, so cavities must be corrected (counters), and the mesh stays valid.

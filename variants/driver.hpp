@@ -7,7 +7,10 @@
 // An algorithm is a class template Algo<K, D> constructible from a K, with
 //   TriangulationResult run(std::span<const Point<D>> points_in_order);
 //   const K& kernel() const;   (the driver reads the predicate counters there)
-// (algorithms/triangulation_result.hpp).
+// (algorithms/triangulation_result.hpp). An algorithm that inserts points of
+// its own (George's enclosing box) also has
+//   static std::optional<std::vector<Point<D>>> added_points(std::span<const Point<D>> input);
+// and a snapping kernel's grid is then fitted to those points too.
 //
 // Policy: `sos` wraps the kernel in perturbed<K> (predicates/perturbed.hpp),
 // `strict` uses K alone.  For the inexact kernels (float, epsilon) `sos` also
@@ -17,13 +20,14 @@
 #pragma once
 #include <algorithm>
 #include <chrono>
+#include <concepts>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <vector>
 
-#include "algorithms/george_box.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/counted.hpp"
 #include "predicates/kernel.hpp"
@@ -84,6 +88,11 @@ void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& 
   r.predicates = algo.kernel().counters();
 }
 
+template <class A, int D>
+concept AddsPoints = requires(std::span<const Point<D>> p) {
+  { A::added_points(p) } -> std::same_as<std::optional<std::vector<Point<D>>>>;
+};
+
 template <template <class, int> class Algo, class K, int D>
 RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o, bool sos) {
   RunResult r;
@@ -93,14 +102,15 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
   pts = input;
   K base{};
   if constexpr (SnappingKernel<K, D>) {
-    // George's enclosing box (algorithms/george_box.hpp): the grid is fitted to
-    // the input and its box corners together, so that the corners are on it.
-    if (o.enclosing_box && !pts.empty())
-      if (auto corners = enclosing_box_corners<D>(std::span<const Point<D>>(pts))) {
-        std::vector<Point<D>> fit = pts;
-        fit.insert(fit.end(), corners->begin(), corners->end());
-        base.snap_all(fit);  // fits the grid (the input itself is snapped below)
-      }
+    // Points the algorithm adds (George's box corners): the grid is fitted to
+    // the input and those together, so that they are on it.
+    if constexpr (AddsPoints<Algo<K, D>, D>)
+      if (!pts.empty())
+        if (auto added = Algo<K, D>::added_points(std::span<const Point<D>>(pts))) {
+          std::vector<Point<D>> fit = pts;
+          fit.insert(fit.end(), added->begin(), added->end());
+          base.snap_all(fit);  // fits the grid (the input itself is snapped below)
+        }
     const auto st = base.snap_all(pts);
     r.snapping = {{"points_moved", st.moved}, {"points_merged", st.merged}};
     r.max_snap_displacement = st.max_displacement;

@@ -37,13 +37,17 @@ template <class K, int D>
 struct GeorgeExactSphere : George<K, D> {
   explicit GeorgeExactSphere(const K& k) : George<K, D>(k, GeorgeOptions{true, false}) {}
 };
+// With the enclosing box, the box corners are points George adds: the driver
+// fits a snapping kernel's grid to them too (variants/driver.hpp).
 template <class K, int D>
 struct GeorgeBox : George<K, D> {
   explicit GeorgeBox(const K& k) : George<K, D>(k, GeorgeOptions{false, true}) {}
+  static auto added_points(std::span<const Point<D>> input) { return enclosing_box_corners<D>(input); }
 };
 template <class K, int D>
 struct GeorgeBoxExactSphere : George<K, D> {
   explicit GeorgeBoxExactSphere(const K& k) : George<K, D>(k, GeorgeOptions{true, true}) {}
+  static auto added_points(std::span<const Point<D>> input) { return enclosing_box_corners<D>(input); }
 };
 
 namespace george_detail {

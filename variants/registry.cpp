@@ -17,6 +17,8 @@ RunResult run_bowyer_watson_integer(const PointSet&, const RunOptions&);
 RunResult run_george_integer(const PointSet&, const RunOptions&);
 RunResult run_george_adaptive(const PointSet&, const RunOptions&);
 RunResult run_george_mp(const PointSet&, const RunOptions&);
+RunResult run_george_float(const PointSet&, const RunOptions&);
+RunResult run_george_epsilon(const PointSet&, const RunOptions&);
 RunResult run_lawson_adaptive(const PointSet&, const RunOptions&);
 RunResult run_lawson_float(const PointSet&, const RunOptions&);
 RunResult run_lawson_mp(const PointSet&, const RunOptions&);
@@ -45,6 +47,8 @@ const Entry kEntries[] = {
     {"george", "integer", &run_george_integer},
     {"george", "adaptive", &run_george_adaptive},
     {"george", "mp", &run_george_mp},
+    {"george", "float", &run_george_float},
+    {"george", "epsilon", &run_george_epsilon},
     {"lawson", "adaptive", &run_lawson_adaptive},
     {"lawson", "integer", &run_lawson_integer},
     {"lawson", "mp", &run_lawson_mp},

@@ -1,6 +1,7 @@
 #!/bin/bash
 # Baker's tolerance variant (bowyer-watson x epsilon, strict policy: a zero within mu
-# is outside the cavity) beside float and beside george (integer volumes, floating spheres).
+# is outside the cavity) beside float and beside george (integer volumes, floating spheres;
+# and float volumes: is George's exactness needed?).
 # 5 seeds per row; columns: runs that ended valid Delaunay / valid but not Delaunay /
 # invalid (caught by the validator) / failed (reported by the algorithm), and the
 # locally non-Delaunay facets summed over the not-Delaunay runs.
@@ -11,7 +12,7 @@ for spec in "near-degenerate --ulps 1" "near-degenerate --ulps 16" "near-degener
   set -- $spec; g=$1; shift
   [ $g = kettner-grid ] && [ $dim = 3 ] && continue
   n=2000; [ $dim = 3 ] && n=800
-  for v in "bowyer-watson epsilon" "bowyer-watson float" "george integer"; do
+  for v in "bowyer-watson epsilon" "bowyer-watson float" "george integer" "george float"; do
     set -- $v; A=$1; K=$2
     runs=0; okd=0; nd=0; inv=0; fl=0; ndf=0
     for seed in 1 2 3 4 5; do
@@ -19,6 +20,7 @@ for spec in "near-degenerate --ulps 1" "near-degenerate --ulps 16" "near-degener
       timeout 60 $D triangulate e.txt --algo $A --kernel $K --policy strict -o e.tri --points-out e.pts --stats e.json 2>/dev/null
       o=$(python3 -c "import json;print(json.load(open('e.json'))['outcome'])" 2>/dev/null || echo failed)
       runs=$((runs+1))
+      if [ $A = george ] && [ "$o" = failed ]; then fl=$((fl+1)); continue; fi
       if [ $A = george ]; then  # its own exact counters (validator run after the triangulation)
         read o c < <(python3 -c "import json;c=json.load(open('e.json'))['counters'];print('ok' if c['valid'] and not c['non_delaunay_facets'] else ('not_delaunay' if c['valid'] else 'invalid'), c['non_delaunay_facets'])")
         [ $o = not_delaunay ] && ndf=$((ndf+c))

@@ -1,0 +1,17 @@
+// George's corrected cavity x `epsilon` kernel: the inexact baseline for the
+// paper's claim (George 1997 section 2.3) that the volume tests must be exact.
+// With epsilon volumes the corrections may themselves be wrong; the run then ends as
+// a reported failure or a result the exact validator rejects (the CLI checks
+// it), never a crash or a hang (every loop of algorithms/george.hpp is bounded
+// by the structure, not by the arithmetic). One translation unit per
+// algorithm x kernel.
+#include "predicates/epsilon_kernel.hpp"
+#include "variants/george_run.hpp"
+
+namespace dlab {
+
+RunResult run_george_epsilon(const PointSet& points, const RunOptions& options) {
+  return run_george<EpsilonKernel>(points, options);
+}
+
+}  // namespace dlab
