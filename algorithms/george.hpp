@@ -325,7 +325,8 @@ bool George<K, D>::correct(std::uint32_t i, std::size_t nbase) {
         }
     }
     if (!removed) {
-      fail("point " + std::to_string(i) + ": an enclosed vertex belongs to base elements only (a bug)");
+      fail("point " + std::to_string(i) + ": an enclosed vertex belongs to base elements only (" +
+           (K::exact ? "a bug: the kernel is exact)" : "inconsistent orientations)"));
       return false;
     }
     ++removed_enclosed_;
