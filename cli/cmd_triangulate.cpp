@@ -127,8 +127,8 @@ int cmd_triangulate(int argc, char** argv) {
     }
     if (!verdict.empty()) {
       std::cerr << "dlab triangulate: the " << opt.kernel << " kernel's result is "
-                << (verdict == "invalid" ? "invalid" : "valid but not Delaunay") << " ("
-                << outcome << "): " << message << "\n";
+                << (verdict == "invalid" ? "invalid" : "valid but not Delaunay")
+                << " (the algorithm itself reported " << outcome << "): " << message << "\n";
       outcome = verdict;
       status = 1;
     }
