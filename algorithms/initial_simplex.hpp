@@ -91,9 +91,6 @@ InitialSimplex<D> find_initial_simplex(const K& k, std::span<const Point<D>> pts
   return r;
 }
 
-// Builds the initial closed mesh on a positively oriented simplex `ids`: the
-// finite simplex and, for each of its facets, a ghost simplex on the outside.
-// Returns the id of the finite simplex.
 // The first simplex of a run, or, when there is none, the run's outcome in
 // `res`: lower-dimensional, or failed when an inexact kernel sees flat what the
 // exact one does not (overflow, cancellation).
@@ -114,6 +111,9 @@ InitialSimplex<D> initial_simplex_or_outcome(const K& k, std::span<const Point<D
   return init;
 }
 
+// Builds the initial closed mesh on a positively oriented simplex `ids`: the
+// finite simplex and, for each of its facets, a ghost simplex on the outside.
+// Returns the id of the finite simplex.
 template <int D>
 std::uint32_t build_initial_mesh(Mesh<D>& m, const std::array<std::uint32_t, D + 1>& ids) {
   constexpr int V = D + 1;

@@ -391,20 +391,18 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
         hi[i] = grid_.cell_of_scaled(i, Iv::up(ball_.centre[i].hi + r));
       }
     }
-    bool covered = true;
+    bool covered = true, empty = false;
     std::array<int, D> blo, bhi;
     for (int i = 0; i < D; ++i) {
       blo[i] = std::max(lo[i], flo[i] - ring);
       bhi[i] = std::min(hi[i], fhi[i] + ring);
       covered &= blo[i] == lo[i] && bhi[i] == hi[i];
-      if (blo[i] > bhi[i]) covered = false;
+      empty |= blo[i] > bhi[i];
     }
-    if (covered || ring > grid_.max_cells()) {
+    if ((covered && !empty) || ring > grid_.max_cells()) {
       scan_range(f, lo, hi, true, false);
       break;
     }
-    bool empty = false;
-    for (int i = 0; i < D; ++i) empty |= blo[i] > bhi[i];
     if (!empty) scan_range(f, blo, bhi, true, false);
   }
   return best_;
