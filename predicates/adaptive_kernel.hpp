@@ -3,13 +3,14 @@
 // and Fast Robust Geometric Predicates", DCG 18 (1997), section 4 (orient2d,
 // orient3d, incircle, insphere; stages A, B, C, D). The first stage is inline
 // and branch-light: Shewchuk's stage A for orient2d, a semi-static filter for
-// orient3d and insphere (bound from the largest |coordinate difference| per
-// axis, as in CGAL's and Geogram's filters; our own constants, derived below)
-// and for incircle (bound from the lifts). Everything after it is out of line.
+// orient3d (bound from the largest |coordinate difference| per axis, as in
+// CGAL's and Geogram's filters; our own constants, derived below), and for
+// incircle and insphere (bounds from the lifts they compute anyway). Everything
+// after it is out of line.
 //
 // Stages (stage_names): 0 "filter", 1 "A", 2 "B", 3 "C", 4 "D", 5 "mp".
-//   filter: |det| > c * S^2 (incircle) or c * (per-axis maxima) (orient3d,
-//           insphere)
+//   filter: |det| > c * S^2 (incircle), c * mx my mz (orient3d), c * L^2 mz
+//           (insphere; L the largest lift)
 //   A:      |det| > errboundA * permanent (inline for orient2d, and again out
 //           of line after the exponent guard, adaptive_kernel.cpp)
 //   B:      exact expansion of the determinant of the rounded differences
@@ -98,18 +99,23 @@ static_assert(2 * o3_half().m * (1 + eps) * (1 + eps) * (1 + eps) < 8);
 // (Derived for comparison: incircle uses the cheaper lift filter ic_lift_filter below.)
 inline constexpr double ic_filter =
     filter_constant(add(mul(lift2(), minor2()), mul(lift2(), minor2())), mul(lift2(), minor2()), 4);
-// insphere: det = (L_d*M_d - L_c*M_c) + (L_b*M_b - L_a*M_a);   bound = c * mx*my*mz * M * M.
+// insphere: det = (L_d*M_d - L_c*M_c) + (L_b*M_b - L_a*M_a);   bound = c * mx*my*mz * M * M
+// (the lift filter below uses the same constant in other units).
 inline constexpr double is_filter =
     filter_constant(add(mul(lift3(), minor3()), mul(lift3(), minor3())),
                     add(mul(lift3(), minor3()), mul(lift3(), minor3())), 5);
 
-// Filter floor (error_bounds.md 3.2): every per-axis maximum is raised to at least
-// is_lo (no harmful underflow; the bound itself stays normal). The bound is
-// computed as is_filter128 * (128 mx' my' mz' M' M'): the factor 128 (exact) exceeds
-// the 72 (1+eps)^k that bounds every intermediate of det (the lifts: through the
-// floors, error_bounds.md 3.2), so an overflow anywhere makes the bound +inf.
-inline constexpr double is_lo = 0x1p-185;
-inline constexpr double is_filter128 = is_filter / 128;
+// insphere lift filter (error_bounds.md 3.2): the calculus above in units where every
+// squared difference is at most L (x and y in the minors each at most sqrt L) and every
+// z in a minor at most mz gives |err| <= is_filter L^2 mz. The fast path bounds L by the
+// largest computed lift (one more factor (1 + eps)^2: is_lift_filter) and floors L and
+// mz (is_lo^2, is_lo: no harmful underflow, the bound stays normal). The bound is
+// computed as is_lift128 * (((128 L') L') mz'): the factor 128 (exact) exceeds the
+// 72 (1+eps)^k that bounds every intermediate of det in these units, so an overflow
+// anywhere makes the bound +inf.
+inline constexpr double is_lo = 0x1p-185, is_lo2 = is_lo * is_lo;
+inline constexpr double is_lift_filter = is_filter * (1 + 0x1p-50);
+inline constexpr double is_lift128 = is_lift_filter / 128;
 constexpr Eb is_half() { return add(mul(lift3(), minor3()), mul(lift3(), minor3())); }
 static_assert(2 * is_half().m * (1 + eps) * pow_int(1 + eps, 5) < 128);
 // Exact-stage guard (error_bounds.md 2): every |coordinate difference| <= hi.
@@ -313,15 +319,14 @@ struct AdaptiveKernel {
     const double clift = (cex * cex + cey * cey) + cez * cez;
     const double dlift = (dex * dex + dey * dey) + dez * dez;
     const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    // Per-axis maxima with the floor is_lo (error_bounds.md 3.2), the bound with the
-    // exact factor 128 first: if an intermediate of det overflowed, the bound is +inf.
+    // Bound from the lifts det computes anyway (error_bounds.md 3.2): L' = max(largest
+    // lift, is_lo^2), mz' = max(largest |z difference|, is_lo); 128 L' first, so that an
+    // overflow anywhere in det makes the bound +inf.
     using std::fabs, std::max;
-    constexpr double lo = adaptive::is_lo;
-    const double mx = max(max(max(fabs(aex), fabs(bex)), max(fabs(cex), fabs(dex))), lo);
-    const double my = max(max(max(fabs(aey), fabs(bey)), max(fabs(cey), fabs(dey))), lo);
-    const double mz = max(max(max(fabs(aez), fabs(bez)), max(fabs(cez), fabs(dez))), lo);
-    const double mm = max(max(mx, my), mz);
-    const double bound = adaptive::is_filter128 * (((((mx * 128) * my) * mz) * mm) * mm);
+    const double L = max(max(max(alift, blift), max(clift, dlift)), adaptive::is_lo2);
+    const double mz =
+        max(max(max(fabs(aez), fabs(bez)), max(fabs(cez), fabs(dez))), adaptive::is_lo);
+    const double bound = adaptive::is_lift128 * (((L * 128) * L) * mz);
     if (det > bound) return {Sign::positive, adaptive::stage_filter};
     if (-det > bound) return {Sign::negative, adaptive::stage_filter};
     return rest(a, b, c, d, e);

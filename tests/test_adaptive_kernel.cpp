@@ -96,7 +96,8 @@ TEST_CASE("filter constants: derived values and comparison with published ones",
   CHECK(o3_ss / eps == Approx(40.0).epsilon(1e-12));
   CHECK(o3_ss > 40 * eps);
   CHECK(o3_ss8 * 8 == o3_ss);
-  CHECK(is_filter128 * 128 == is_filter);
+  CHECK(is_lift128 * 128 == is_lift_filter);
+  CHECK(is_lift_filter >= is_filter * (1 + 2 * eps) * (1 + eps));  // L = (1 + eps) max lift
   // Ours are below the published orient and insphere constants (different analysis;
   // the published incircle one uses a finer bound of the lifted terms).
   CHECK(o2_filter < published_o2);
@@ -354,8 +355,9 @@ TEST_CASE("exponent guards: exact at their edges, mp just beyond", "[adaptive]")
       CHECK(ak.orient3d_staged(pa, pb, pc, o).stage == adaptive::stage_filter);
     }
   }
-  // insphere filter floor: per-axis maxima below is_lo are raised to it; exact on
-  // both sides, and the filter answers at the floor (bound unchanged there).
+  // insphere filter floors: a largest lift below is_lo^2 and a largest |z| below is_lo
+  // are raised to them; exact on both sides, and the filter answers at the floors
+  // (bound unchanged there).
   {
     const double l2 = adaptive::is_lo;
     const Point3 pa{l2, 0, 0}, pb{0, l2, 0}, pc{-l2, 0, 0}, pd{0, 0, l2}, inside{0, 0, l2 / 2};
@@ -405,14 +407,16 @@ double o3_bare_bound(const Point3& a, const Point3& b, const Point3& c, const Po
     m[j] = std::max({std::fabs(a[j] - d[j]), std::fabs(b[j] - d[j]), std::fabs(c[j] - d[j])});
   return adaptive::o3_ss * (m[0] * m[1] * m[2]);
 }
+// The insphere lift filter's bound without its floors and without the factor 128:
+// is_lift_filter L^2 mz, L the largest lift, mz the largest |z difference|.
 double is_bare_bound(const std::array<Point3, 5>& p) {
-  double m[3];
-  for (int j = 0; j < 3; ++j) {
-    m[j] = 0;
-    for (int i = 0; i < 4; ++i) m[j] = std::max(m[j], std::fabs(p[i][j] - p[4][j]));
+  double L = 0, mz = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double x = p[i][0] - p[4][0], y = p[i][1] - p[4][1], z = p[i][2] - p[4][2];
+    L = std::max(L, (x * x + y * y) + z * z);
+    mz = std::max(mz, std::fabs(z));
   }
-  const double mm = std::max({m[0], m[1], m[2]});
-  return adaptive::is_filter * m[0] * m[1] * m[2] * mm * mm;
+  return adaptive::is_lift_filter * (L * L) * mz;
 }
 
 }  // namespace
@@ -483,11 +487,15 @@ TEST_CASE("inline filters: the underflow floors and the overflow factor are need
     CHECK(s.stage != adaptive::stage_filter);
     CHECK(s.sign == mk.incircle(a, b, c, d));
   }
-  SECTION("insphere: x, y products underflow (floor is_lo)") {
-    const std::array<Point3, 5> p = {{{0x1p-536, 0x1p-538, -1.0},
-                                      {0, -0x1p-537, 0.25},
-                                      {0x1.8p-537, 0x1p-536, -0.5},
-                                      {-0x1.cp-536, -0x1.cp-536, 0},
+  SECTION("insphere: every product underflows (floors is_lo^2 and is_lo)") {
+    // Lattice points of spacing 2^-217: the degree-5 monomials (~2^-1070) lose their
+    // low bits, det rounds to the smallest subnormal with the wrong sign, and the
+    // bare bound c L^2 mz underflows to zero.
+    const double u = 0x1p-217;
+    const std::array<Point3, 5> p = {{{2 * u, -3 * u, -1 * u},
+                                      {-5 * u, 1 * u, -2 * u},
+                                      {-3 * u, 3 * u, 4 * u},
+                                      {-1 * u, -5 * u, -5 * u},
                                       {0, 0, 0}}};
     const double det = det::insphere<double>(p[0], p[1], p[2], p[3], p[4]);
     const Q D = det::insphere<Q>(p[0], p[1], p[2], p[3], p[4]);
@@ -497,7 +505,7 @@ TEST_CASE("inline filters: the underflow floors and the overflow factor are need
     CHECK(s.sign == mk.insphere(p[0], p[1], p[2], p[3], p[4]));
     CHECK(s.stage != adaptive::stage_filter);
   }
-  SECTION("insphere: intermediates overflow while the product of maxima does not") {
+  SECTION("insphere: intermediates overflow while the bare bound c L^2 mz does not") {
     const double h = 0x1p204;
     const std::array<std::array<Point3, 5>, 3> sets = {{
         {{{h, h, -2 * h}, {0, h, h}, {h, h, 2 * h}, {-h, -h, -h}, {0, 0, 0}}},
@@ -580,16 +588,18 @@ TEST_CASE("inline stages answer only above their documented bound", "[adaptive]"
       check(2, ak.orient3d_staged(p[0], p[1], p[2], q), stage_filter,
             orient3d_filter_scalar(p[0], p[1], p[2], q).det, o3_ss * m[0] * m[1] * m[2]);
     }
-    {  // insphere: per-axis filter, bound is_filter mx' my' mz' M'^2
-      double m[3];
-      for (int j = 0; j < 3; ++j)
-        m[j] = std::max(mx({p[0][j] - p[4][j], p[1][j] - p[4][j], p[2][j] - p[4][j],
-                            p[3][j] - p[4][j]}),
-                        is_lo);
-      const double M = std::max({m[0], m[1], m[2]});
+    {  // insphere: lift filter, bound is_lift_filter L'^2 mz'
+      double L = 0;
+      for (int i = 0; i < 4; ++i) {
+        const double x = p[i][0] - p[4][0], y = p[i][1] - p[4][1], z = p[i][2] - p[4][2];
+        L = std::max(L, (x * x + y * y) + z * z);
+      }
+      L = std::max(L, is_lo * is_lo);
+      const double mz = std::max(mx({p[0][2] - p[4][2], p[1][2] - p[4][2], p[2][2] - p[4][2],
+                                     p[3][2] - p[4][2]}),
+                                 is_lo);
       check(3, ak.insphere_staged(p[0], p[1], p[2], p[3], p[4]), stage_filter,
-            det::insphere<double>(p[0], p[1], p[2], p[3], p[4]),
-            is_filter * m[0] * m[1] * m[2] * M * M);
+            det::insphere<double>(p[0], p[1], p[2], p[3], p[4]), is_lift_filter * L * L * mz);
     }
   }
   for (int k = 0; k < 4; ++k) {
@@ -745,7 +755,7 @@ namespace {
 
 // Worst observed error, in units of eps times the quantity the bound scales.
 struct Worst {
-  double a = 0, b = 0, filter = 0, lift = 0;  // lift: incircle's lift filter, orient3d's inline filter
+  double a = 0, b = 0, filter = 0, lift = 0;  // lift: incircle's and insphere's lift filters, orient3d's inline filter
 };
 
 // For one call: det (double, the kernel's evaluation order = det::X<double>),
@@ -840,9 +850,17 @@ TEST_CASE("stage A, stage B and filter error bounds hold on adversarial inputs",
       for (int j = 0; j < 3; ++j)
         m[j] = std::max({ab(q[0][j]), ab(q[1][j]), ab(q[2][j]), ab(q[3][j])});
       const double M = std::max({m[0], m[1], m[2]});
-      record(ws, det::insphere<double>(p[0], p[1], p[2], p[3], p[4]),
-             det::insphere<Q>(q[0], q[1], q[2], q[3], z3),
-             det::insphere<Q>(p[0], p[1], p[2], p[3], p[4]), P, m[0] * m[1] * m[2] * M * M);
+      const double det = det::insphere<double>(p[0], p[1], p[2], p[3], p[4]);
+      const Q D = det::insphere<Q>(p[0], p[1], p[2], p[3], p[4]);
+      record(ws, det, det::insphere<Q>(q[0], q[1], q[2], q[3], z3), D, P,
+             m[0] * m[1] * m[2] * M * M);
+      // The lift filter's scale L^2 mz (L the largest lift as the kernel computes it).
+      const double L = std::max({(q[0][0] * q[0][0] + q[0][1] * q[0][1]) + q[0][2] * q[0][2],
+                                 (q[1][0] * q[1][0] + q[1][1] * q[1][1]) + q[1][2] * q[1][2],
+                                 (q[2][0] * q[2][0] + q[2][1] * q[2][1]) + q[2][2] * q[2][2],
+                                 (q[3][0] * q[3][0] + q[3][1] * q[3][1]) + q[3][2] * q[3][2]});
+      const Q err = abs(Q(det) - D) - Q(adaptive::eps) * abs(Q(det));
+      ws.lift = std::max(ws.lift, static_cast<double>(err / (Q(L) * Q(L) * Q(m[2]))) / adaptive::eps);
     }
   }
   auto check = [](const char* what, const Worst& w, double A, double B, double F) {
@@ -867,6 +885,9 @@ TEST_CASE("stage A, stage B and filter error bounds hold on adversarial inputs",
   CHECK(w3.lift > 0.01 * o3_ss / eps);
   check("orient3d", w3, o3A, o3B, o3_filter);
   check("insphere", ws, isA, isB, is_filter);
+  INFO("insphere lift filter: worst " << ws.lift << " (bound " << is_lift_filter / eps << ")");
+  CHECK(ws.lift <= is_lift_filter / eps);
+  CHECK(ws.lift > 0.001 * is_lift_filter / eps);
 }
 
 TEST_CASE("Kettner et al. orientation experiment: every sign right", "[adaptive]") {
