@@ -8,9 +8,12 @@
 //               to doubles), the query point then moved by -1, 0 or +1 ulp in one
 //               coordinate: the exact stages decide most of these.
 // For the adaptive kernel, counters give the share of calls each stage answered.
+// `adaptive-static` is the adaptive kernel fitted to the set's points
+// (AdaptiveKernel::fit_static_filter, as the driver fits it for Bowyer-Watson,
+// Lawson and George): orient3d then starts with the static filter.
 // --dlab_tight=PRED/KERNEL[/PASSES[/SET]] runs the same loop body without Google
 // Benchmark, in one function (tight_pass) for callgrind: see the comment there.
-// --dlab_ratio=ROUNDS prints adaptive / float per predicate from interleaved tight
+// --dlab_ratio=ROUNDS prints adaptive (and adaptive-static) / float per predicate from interleaved tight
 // passes.
 #include <benchmark/benchmark.h>
 
@@ -110,6 +113,11 @@ std::vector<Call> make_inputs(Pred pred, Set set) {
 
 Point2 xy(const Point3& p) { return {p[0], p[1]}; }
 
+// The adaptive kernel fitted to the points of the set it is timed on.
+struct AdaptiveStatic : AdaptiveKernel {
+  static constexpr std::string_view name = "adaptive-static";
+};
+
 // The calls of one (predicate, set): 2D predicates read stored Point2s (as an
 // algorithm reads its point array), 3D ones Point3s; no temporaries per call.
 struct Inputs {
@@ -142,14 +150,26 @@ inline int call(const K& k, const Inputs& in, std::size_t i) {
   }
 }
 
-Staged staged(Pred pred, const Inputs& in, std::size_t i) {
+// K{}, or for AdaptiveStatic an adaptive kernel fitted to every point of the set.
+template <class K>
+K make_kernel(const Inputs& in) {
+  K k{};
+  if constexpr (std::is_same_v<K, AdaptiveStatic>) {
+    std::vector<Point3> pts;
+    for (const Call& c : in.c3) pts.insert(pts.end(), c.begin(), c.end());
+    k.fit_static_filter(pts);
+  }
+  return k;
+}
+
+Staged staged(const AdaptiveKernel& k, Pred pred, const Inputs& in, std::size_t i) {
   const auto& d = in.c2[i];
   const auto& c = in.c3[i];
   switch (pred) {
-    case kOrient2d: return AdaptiveKernel::orient2d_staged(d[0], d[1], d[2]);
-    case kIncircle: return AdaptiveKernel::incircle_staged(d[0], d[1], d[2], d[3]);
-    case kOrient3d: return AdaptiveKernel::orient3d_staged(c[0], c[1], c[2], c[3]);
-    case kInsphere: return AdaptiveKernel::insphere_staged(c[0], c[1], c[2], c[3], c[4]);
+    case kOrient2d: return k.orient2d_staged(d[0], d[1], d[2]);
+    case kIncircle: return k.incircle_staged(d[0], d[1], d[2], d[3]);
+    case kOrient3d: return k.orient3d_staged(c[0], c[1], c[2], c[3]);
+    case kInsphere: return k.insphere_staged(c[0], c[1], c[2], c[3], c[4]);
   }
   return {};
 }
@@ -161,7 +181,7 @@ Staged staged(Pred pred, const Inputs& in, std::size_t i) {
 template <class K, Pred P>
 void bench(benchmark::State& state, Set set) {
   const Inputs in = make_set(P, set);
-  const K k{};
+  const K k = make_kernel<K>(in);
   std::size_t i = 0;
   int acc = 0;
   for (auto _ : state) {
@@ -169,9 +189,9 @@ void bench(benchmark::State& state, Set set) {
     i = (i + 1) & (kCalls - 1);
     benchmark::DoNotOptimize(acc);
   }
-  if constexpr (std::is_same_v<K, AdaptiveKernel>) {
-    std::array<int, 6> n{};
-    for (std::size_t j = 0; j < kCalls; ++j) ++n[staged(P, in, j).stage];
+  if constexpr (std::is_base_of_v<AdaptiveKernel, K>) {
+    std::array<int, AdaptiveKernel::stage_names.size()> n{};
+    for (std::size_t j = 0; j < kCalls; ++j) ++n[staged(k, P, in, j).stage];
     for (std::size_t s = 0; s < n.size(); ++s)
       if (n[s] > 0)
         state.counters[std::string("stage_") + std::string(AdaptiveKernel::stage_names[s])] =
@@ -199,7 +219,7 @@ template <class K, Pred P>
 // The fastest of `passes` timed passes over `in`, in ns per call; adds the signs to *sum.
 template <class K, Pred P>
 double best_pass(const Inputs& in, int passes, long* sum) {
-  const K k{};
+  const K k = make_kernel<K>(in);
   double best = 1e300;
   for (int p = 0; p < passes; ++p) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -221,19 +241,29 @@ int run_tight(Set set, int passes) {
 }
 
 // ---- Ratio (--dlab_ratio=ROUNDS) ---------------------------------------------------
-// adaptive / float on random inputs, per predicate: ROUNDS rounds, each a best-of-20
-// pass of float then one of adaptive (interleaved, so that a change in the machine's
-// load or clock hits both kernels alike); the minimum per kernel.
-template <Pred P>
+// kernel / float on random inputs, per predicate: ROUNDS rounds, each a best-of-20
+// pass of float then one of the kernel (interleaved, so that a change in the
+// machine's load or clock hits both alike). Printed: the fastest pass of each, their
+// ratio, and the median and quartiles of the per-round ratios (each round pairs the
+// two kernels under the same machine state: the steadier figure on a shared machine).
+template <Pred P, class K>
 void ratio_row(const char* name, int rounds) {
   const Inputs in = make_set(P, kRandom);
-  long sum_float = 0, sum_adaptive = 0;
-  double t_float = 1e300, t_adaptive = 1e300;
+  long sum_float = 0, sum_k = 0;
+  double t_float = 1e300, t_k = 1e300;
+  std::vector<double> per_round;
   for (int r = 0; r < rounds; ++r) {
-    t_float = std::min(t_float, best_pass<FloatKernel, P>(in, 20, &sum_float));
-    t_adaptive = std::min(t_adaptive, best_pass<AdaptiveKernel, P>(in, 20, &sum_adaptive));
+    const double f = best_pass<FloatKernel, P>(in, 20, &sum_float);
+    const double k = best_pass<K, P>(in, 20, &sum_k);
+    t_float = std::min(t_float, f);
+    t_k = std::min(t_k, k);
+    per_round.push_back(k / f);
   }
-  std::printf("| %s | %.2f | %.2f | %.2f |\n", name, t_float, t_adaptive, t_adaptive / t_float);
+  std::sort(per_round.begin(), per_round.end());
+  const std::size_t n = per_round.size();
+  std::printf("| %s | %s | %.2f | %.2f | %.2f | %.2f (%.2f-%.2f) |\n", name,
+              std::string(K::name).c_str(), t_float, t_k, t_k / t_float, per_round[n / 2],
+              per_round[n / 4], per_round[(3 * n) / 4]);
 }
 
 int ratio(const std::string& arg) {
@@ -242,11 +272,14 @@ int ratio(const std::string& arg) {
     std::fprintf(stderr, "bad --dlab_ratio=%s (a number of rounds)\n", arg.c_str());
     return 2;
   }
-  std::printf("| predicate | float ns | adaptive ns | adaptive / float |\n|---|---:|---:|---:|\n");
-  ratio_row<kOrient2d>("orient2d", rounds);
-  ratio_row<kIncircle>("incircle", rounds);
-  ratio_row<kOrient3d>("orient3d", rounds);
-  ratio_row<kInsphere>("insphere", rounds);
+  std::printf(
+      "| predicate | kernel | float ns | kernel ns | fastest / fastest | per-round median "
+      "(quartiles) |\n|---|---|---:|---:|---:|---:|\n");
+  ratio_row<kOrient2d, AdaptiveKernel>("orient2d", rounds);
+  ratio_row<kIncircle, AdaptiveKernel>("incircle", rounds);
+  ratio_row<kOrient3d, AdaptiveKernel>("orient3d", rounds);
+  ratio_row<kOrient3d, AdaptiveStatic>("orient3d", rounds);
+  ratio_row<kInsphere, AdaptiveKernel>("insphere", rounds);
   return 0;
 }
 
@@ -284,7 +317,8 @@ int tight(const std::string& spec) {
   const Pred pred = static_cast<Pred>(pi);
   if (f[1] == "float") return tight_kernel<FloatKernel>(pred, set, passes);
   if (f[1] == "adaptive") return tight_kernel<AdaptiveKernel>(pred, set, passes);
-  std::fprintf(stderr, "--dlab_tight: kernel must be float or adaptive\n");
+  if (f[1] == "adaptive-static") return tight_kernel<AdaptiveStatic>(pred, set, passes);
+  std::fprintf(stderr, "--dlab_tight: kernel must be float, adaptive or adaptive-static\n");
   return 2;
 }
 
@@ -312,6 +346,7 @@ int main(int argc, char** argv) {
   }
   register_kernel<FloatKernel>();
   register_kernel<AdaptiveKernel>();
+  register_kernel<AdaptiveStatic>();
   register_kernel<MpKernel>();
   register_kernel<EpsilonKernel>();
   register_kernel<IntegerKernel>();

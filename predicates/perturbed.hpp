@@ -215,7 +215,7 @@ struct perturbed {
     // The projection along `axis` is non-degenerate, so the plane's normal has a
     // non-zero component on `axis` and s = a + t e_axis (t != 0) is off the plane.
     const Point3 s = off_plane(a, b, c, p, axis);
-    return insphere_base(a, b, c, s, p).sign * orient3d_base(a, b, c, s).sign;
+    return insphere_base(a, b, c, s, p).sign * orient3d_made_point(a, b, c, s).sign;
   }
 
   // Perturbed unoriented in-circle (CGAL's coplanar_side_of_bounded_circle with
@@ -262,7 +262,7 @@ struct perturbed {
   {
     Staged s;
     if constexpr (lattice) {  // exact sign and perturbation in one go (small_integer.hpp)
-      s = K::incircle_first_then(a, b, c, d,
+      s = base.incircle_first_then(a, b, c, d,
                                  [](const auto&... p) { return incircle_lattice(p...); });
     } else {
       s = dlab::incircle_staged(base, a, b, c, d);
@@ -282,7 +282,7 @@ struct perturbed {
   {
     Staged s;
     if constexpr (lattice) {
-      s = K::insphere_first_then(a, b, c, d, e,
+      s = base.insphere_first_then(a, b, c, d, e,
                                  [](const auto&... p) { return insphere_lattice(p...); });
     } else {
       s = dlab::insphere_staged(base, a, b, c, d, e);
@@ -340,20 +340,32 @@ struct perturbed {
   // K's exact sign and stage, from the small-integer evaluation when it applies.
   Staged orient2d_base(const Point2& a, const Point2& b, const Point2& c) const {
     if constexpr (lattice)
-      return K::orient2d_first_then(a, b, c,
+      return base.orient2d_first_then(a, b, c,
                                   [](const auto&... p) { return orient2d_lattice(p...); });
     return dlab::orient2d_staged(base, a, b, c);
   }
   Staged orient3d_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    return orient3d_base_on(base, a, b, c, d);
+  }
+  static Staged orient3d_base_on(const K& k, const Point3& a, const Point3& b, const Point3& c,
+                                 const Point3& d) {
     if constexpr (lattice)
-      return K::orient3d_first_then(a, b, c, d,
-                                  [](const auto&... p) { return orient3d_lattice(p...); });
-    return dlab::orient3d_staged(base, a, b, c, d);
+      return k.orient3d_first_then(a, b, c, d,
+                                   [](const auto&... p) { return orient3d_lattice(p...); });
+    return dlab::orient3d_staged(k, a, b, c, d);
+  }
+  // orient3d with a point made here (off_plane): not covered by a fitted kernel's
+  // static filter (AdaptiveKernel::fit_static_filter), so K without it answers.
+  Staged orient3d_made_point(const Point3& a, const Point3& b, const Point3& c,
+                             const Point3& s) const {
+    if constexpr (requires { base.without_static_filter(); })
+      return orient3d_base_on(base.without_static_filter(), a, b, c, s);
+    return orient3d_base_on(base, a, b, c, s);
   }
   Staged insphere_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                        const Point3& e) const {
     if constexpr (lattice)
-      return K::insphere_first_then(a, b, c, d, e,
+      return base.insphere_first_then(a, b, c, d, e,
                                   [](const auto&... p) { return insphere_lattice(p...); });
     return dlab::insphere_staged(base, a, b, c, d, e);
   }

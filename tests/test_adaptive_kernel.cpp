@@ -77,7 +77,7 @@ TEST_CASE("adaptive kernel satisfies both concepts and names its stages", "[adap
   STATIC_REQUIRE(Kernel3<AdaptiveKernel>);
   STATIC_REQUIRE(AdaptiveKernel::exact);
   STATIC_REQUIRE(AdaptiveKernel::name == "adaptive");
-  STATIC_REQUIRE(AdaptiveKernel::stage_names.size() == 6);
+  STATIC_REQUIRE(AdaptiveKernel::stage_names.size() == 7);
   CHECK(AdaptiveKernel::stage_names[adaptive::stage_mp] == "mp");
   CHECK(AdaptiveKernel::stage_names[adaptive::stage_filter] == "filter");
 }
