@@ -50,6 +50,10 @@ class BowyerWatson {
  public:
   explicit BowyerWatson(const K& k = K{}) : k_(k) {}
 
+  // The kernel sees only the points given to run(); variants/driver.hpp may then
+  // fit a static filter (tests/test_static_filter.cpp checks the promise).
+  static constexpr bool kernel_sees_given_points_only = true;
+
   // Triangulates pts in the order given.  pts must outlive the call.
   TriangulationResult run(std::span<const Point<D>> pts);
 

@@ -103,6 +103,11 @@ class George {
  public:
   explicit George(const K& k = K{}, GeorgeOptions o = {}) : k_(k), opt_(o) {}
 
+  // The kernel sees only the points given to run() (and, for George's box, its
+  // corners: added_points); variants/driver.hpp may then fit a static filter
+  // (tests/test_static_filter.cpp checks the promise).
+  static constexpr bool kernel_sees_given_points_only = true;
+
   TriangulationResult run(std::span<const Point<D>> pts);
 
   const Mesh<D>& mesh() const { return mesh_; }

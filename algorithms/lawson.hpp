@@ -70,6 +70,10 @@ class Lawson {
 
  public:
   explicit Lawson(const K& k = K{}) : k_(k), flipper_(k_, mesh_) {}
+
+  // The kernel sees only the points given to run(); variants/driver.hpp may then
+  // fit a static filter (tests/test_static_filter.cpp checks the promise).
+  static constexpr bool kernel_sees_given_points_only = true;
   Lawson(const Lawson&) = delete;
   Lawson& operator=(const Lawson&) = delete;
 

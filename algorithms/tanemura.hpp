@@ -71,6 +71,11 @@ class Tanemura {
  public:
   explicit Tanemura(const K& k = K{}) : k_(k) {}
 
+  // The kernel sees only the points given to run() (the start facet's auxiliary
+  // points go to its own MpKernel); variants/driver.hpp may then fit a static
+  // filter (tests/test_static_filter.cpp checks the promise).
+  static constexpr bool kernel_sees_given_points_only = true;
+
   TriangulationResult run(std::span<const Point<D>> pts);
   const K& kernel() const { return k_; }
 

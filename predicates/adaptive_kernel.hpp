@@ -297,10 +297,12 @@ struct AdaptiveKernel {
     double width = 0;
     for (int j = 0; j < 3; ++j) {
       double lo = pts[0][j], hi = pts[0][j];
-      for (const Point3& p : pts) lo = std::min(lo, p[j]), hi = std::max(hi, p[j]);
+      for (const Point3& p : pts) {
+        if (!std::isfinite(p[j])) return;  // no promise can be made: stay unfitted
+        lo = std::min(lo, p[j]), hi = std::max(hi, p[j]);
+      }
       width = std::max(width, hi - lo);
     }
-    if (!std::isfinite(width)) return;
     o3_static_ = adaptive::orient3d_static_bound(4 * width);  // +inf if W^3 overflows
     fitted_ = true;
   }

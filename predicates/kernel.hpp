@@ -51,6 +51,15 @@ concept SnappingKernel = requires(K& k, std::vector<Point<D>>& pts) {
   k.snap_all(pts);
 };
 
+// A kernel with a static filter (adaptive: orient3d) can be fitted to the points
+// it will be asked about: k.fit_static_filter(points) (predicates/adaptive_kernel.hpp
+// says which calls the fitted filter covers). variants/driver.hpp fits it only for
+// algorithms that promise to pass the kernel nothing but those points.
+template <class K, int D>
+concept StaticFilterKernel = requires(K& k, std::span<const Point<D>> pts) {
+  k.fit_static_filter(pts);
+};
+
 // Staged kernels (adaptive, filtered) can also say which stage answered:
 // `k.orient2d_staged(a,b,c)` returns {sign, stage index}; `K::stage_names`
 // lists the stages. `counted<K>` uses this when it is present.

@@ -215,7 +215,8 @@ struct perturbed {
     // The projection along `axis` is non-degenerate, so the plane's normal has a
     // non-zero component on `axis` and s = a + t e_axis (t != 0) is off the plane.
     const Point3 s = off_plane(a, b, c, p, axis);
-    return insphere_base(a, b, c, s, p).sign * orient3d_made_point(a, b, c, s).sign;
+    const perturbed k = without_static_filter();  // s is made here: see below
+    return k.insphere_base(a, b, c, s, p).sign * k.orient3d_base(a, b, c, s).sign;
   }
 
   // Perturbed unoriented in-circle (CGAL's coplanar_side_of_bounded_circle with
@@ -239,6 +240,16 @@ struct perturbed {
       if (o != Sign::zero) return o * local;
     }
     return -local;  // unreachable for distinct points; CGAL 5.5's value
+  }
+
+  // A kernel fitted to the input (a static filter, AdaptiveKernel::fit_static_filter)
+  // only covers points near it; the off-plane point made above may be farther, so
+  // that call goes to K without its static filter.
+  perturbed without_static_filter() const {
+    if constexpr (requires { base.without_static_filter(); })
+      return perturbed(base.without_static_filter());
+    else
+      return *this;
   }
 
   // Snapping kernels (integer) snap as K does; the perturbation then orders
@@ -345,22 +356,10 @@ struct perturbed {
     return dlab::orient2d_staged(base, a, b, c);
   }
   Staged orient3d_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
-    return orient3d_base_on(base, a, b, c, d);
-  }
-  static Staged orient3d_base_on(const K& k, const Point3& a, const Point3& b, const Point3& c,
-                                 const Point3& d) {
     if constexpr (lattice)
-      return k.orient3d_first_then(a, b, c, d,
-                                   [](const auto&... p) { return orient3d_lattice(p...); });
-    return dlab::orient3d_staged(k, a, b, c, d);
-  }
-  // orient3d with a point made here (off_plane): not covered by a fitted kernel's
-  // static filter (AdaptiveKernel::fit_static_filter), so K without it answers.
-  Staged orient3d_made_point(const Point3& a, const Point3& b, const Point3& c,
-                             const Point3& s) const {
-    if constexpr (requires { base.without_static_filter(); })
-      return orient3d_base_on(base.without_static_filter(), a, b, c, s);
-    return orient3d_base_on(base, a, b, c, s);
+      return base.orient3d_first_then(a, b, c, d,
+                                      [](const auto&... p) { return orient3d_lattice(p...); });
+    return dlab::orient3d_staged(base, a, b, c, d);
   }
   Staged insphere_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                        const Point3& e) const {

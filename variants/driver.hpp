@@ -10,7 +10,11 @@
 // (algorithms/triangulation_result.hpp). An algorithm that inserts points of
 // its own (George's enclosing box) also has
 //   static std::optional<std::vector<Point<D>>> added_points(std::span<const Point<D>> input);
-// and a snapping kernel's grid is then fitted to those points too.
+// and a snapping kernel's grid is then fitted to those points too. An algorithm
+// that passes its kernel no other points than these (and the input) says
+//   static constexpr bool kernel_sees_given_points_only = true;
+// and a kernel with a static filter (StaticFilterKernel) is then fitted to them;
+// without the promise, it stays unfitted.
 //
 // Policy: `sos` wraps the kernel in perturbed<K> (predicates/perturbed.hpp),
 // `strict` uses K alone.  For the inexact kernels (float, epsilon) `sos` also
@@ -93,6 +97,20 @@ concept AddsPoints = requires(std::span<const Point<D>> p) {
   { A::added_points(p) } -> std::same_as<std::optional<std::vector<Point<D>>>>;
 };
 
+template <class A>
+concept SeesGivenPointsOnly = requires { requires A::kernel_sees_given_points_only; };
+
+// The input and the points the algorithm adds (George's box corners).
+template <template <class, int> class Algo, class K, int D>
+std::vector<Point<D>> with_added_points(const std::vector<Point<D>>& pts) {
+  std::vector<Point<D>> all = pts;
+  if constexpr (AddsPoints<Algo<K, D>, D>)
+    if (!pts.empty())
+      if (auto added = Algo<K, D>::added_points(std::span<const Point<D>>(pts)))
+        all.insert(all.end(), added->begin(), added->end());
+  return all;
+}
+
 template <template <class, int> class Algo, class K, int D>
 RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o, bool sos) {
   RunResult r;
@@ -102,19 +120,18 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
   pts = input;
   K base{};
   if constexpr (SnappingKernel<K, D>) {
-    // Points the algorithm adds (George's box corners): the grid is fitted to
-    // the input and those together, so that they are on it.
-    if constexpr (AddsPoints<Algo<K, D>, D>)
-      if (!pts.empty())
-        if (auto added = Algo<K, D>::added_points(std::span<const Point<D>>(pts))) {
-          std::vector<Point<D>> fit = pts;
-          fit.insert(fit.end(), added->begin(), added->end());
-          base.snap_all(fit);  // fits the grid (the input itself is snapped below)
-        }
+    // The grid is fitted to the input and the added points together, so that
+    // those are on it too (the input itself is snapped below).
+    if constexpr (AddsPoints<Algo<K, D>, D>) {
+      std::vector<Point<D>> fit = with_added_points<Algo, K, D>(pts);
+      base.snap_all(fit);
+    }
     const auto st = base.snap_all(pts);
     r.snapping = {{"points_moved", st.moved}, {"points_merged", st.merged}};
     r.max_snap_displacement = st.max_displacement;
   }
+  if constexpr (StaticFilterKernel<K, D> && SeesGivenPointsOnly<Algo<K, D>>)
+    base.fit_static_filter(std::span<const Point<D>>(with_added_points<Algo, K, D>(pts)));
   // Predicate calls are always counted (design.md section 5, --stats).
   if (sos)
     run_kernel<Algo, counted<perturbed<K>>, D>(counted<perturbed<K>>(perturbed<K>(base)), pts, o, r);
