@@ -103,7 +103,8 @@ struct Confined {
 
 int sgn(const Q& q) { return (q > 0) - (q < 0); }
 
-// A point within `reach` times G of the box around the origin-centred data.
+// A random point within reach times G of the box (reach times the width on each axis
+// of positive width).
 Point3 near_box(Rng& r, const Box& b, double reach) {
   Point3 p;
   for (int j = 0; j < 3; ++j) {
@@ -134,7 +135,7 @@ TEST_CASE("static filter: fitted answers are exact, near its bound too", "[stati
     // the factor (4 / 3.02)^3 of it (W = 4 G).
     const double W = 3.02 * box.g, B = k.orient3d_static_bound();
     CHECK(B >= adaptive::o3_ss * W * W * W);
-    INFO("B / (o3_ss W^3) = " << B / (adaptive::o3_ss * W * W * W) << " G " << box.g);
+    INFO("B / (o3_ss (3.02 G)^3) = " << B / (adaptive::o3_ss * W * W * W));
     CHECK(B <= adaptive::o3_ss * W * W * W * 2.33);
     for (int i = 0; i < 300; ++i) {
       const Point3 a = near_box(r, box, 1.0), b = near_box(r, box, 1.0), c = near_box(r, box, 1.0);
