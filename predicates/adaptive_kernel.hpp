@@ -289,8 +289,8 @@ struct AdaptiveKernel {
   // default), orient3d starts with the per-call filter. fit_static_filter(pts) sets one
   // bound for all calls: with G the largest width of pts' bounding box, every call
   // whose four points lie within 1.01 G of that box (on every axis) has coordinate
-  // differences of at most 3.02 G <= W = 4 G (1 - eps), so the per-call bound with
-  // every axis maximum W is valid for it. The caller promises that every orient3d
+  // differences of at most 3.02 G <= 4 (1 - eps) G <= W = 4 * (G as computed), so
+  // the per-call bound with every axis maximum W is valid for it. The caller promises that every orient3d
   // call meets this (variants/driver.hpp fits only algorithms that promise it).
   void fit_static_filter(std::span<const Point3> pts) {
     if (pts.empty()) return;
