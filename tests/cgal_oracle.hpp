@@ -3,10 +3,7 @@
 // finite simplices in one canonical form, so that two triangulations can be
 // compared with ==. Only cgal_oracle.cpp includes CGAL (it is slow to compile).
 //
-// Canonical form of a simplex: its indices sorted ascending, then the last two
-// swapped when the sorting permutation was odd, so that orientation is kept
-// (an even permutation of a positively oriented simplex is positive). In 2D
-// this is the rotation that puts the smallest index first. The list is sorted.
+// (Canonical form: tests/run_readout.hpp.)
 #pragma once
 #include <algorithm>
 #include <array>
@@ -15,41 +12,13 @@
 #include <vector>
 
 #include "predicates/point.hpp"
+#include "tests/run_readout.hpp"
 
 namespace dlab::oracle {
 
-template <int D>
-using Simplex = std::array<std::uint32_t, D + 1>;
-
-template <int D>
-Simplex<D> canonical(Simplex<D> s) {
-  bool odd = false;
-  for (int a = 1; a <= D; ++a)
-    for (int b = a; b > 0 && s[b - 1] > s[b]; --b) {
-      const std::uint32_t t = s[b - 1];
-      s[b - 1] = s[b];
-      s[b] = t;
-      odd = !odd;
-    }
-  if (odd) {
-    const std::uint32_t t = s[D - 1];
-    s[D - 1] = s[D];
-    s[D] = t;
-  }
-  return s;
-}
-
-// Flat index list (d+1 per simplex) -> sorted list of canonical simplices.
-template <int D>
-std::vector<Simplex<D>> canonical_simplices(std::span<const std::uint32_t> flat) {
-  std::vector<Simplex<D>> out(flat.size() / (D + 1));
-  for (std::size_t s = 0; s < out.size(); ++s) {
-    for (int j = 0; j <= D; ++j) out[s][j] = flat[s * (D + 1) + j];
-    out[s] = canonical<D>(out[s]);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+using test::Simplex;
+using test::canonical;
+using test::canonical_simplices;
 
 // CGAL's Delaunay triangulation (with its symbolic perturbation, so unique):
 // finite simplices as canonical index tuples, sorted, every index the first

@@ -17,6 +17,7 @@
 #include "predicates/mp_kernel.hpp"
 #include "predicates/perturbed.hpp"
 #include "variants/insertion_order.hpp"
+#include "tests/run_readout.hpp"
 #include "variants/run.hpp"
 
 using namespace dlab;
@@ -168,29 +169,6 @@ void check_triangulation(const std::vector<Point<D>>& input, const RunResult& r,
   }
 }
 
-// Canonical set of oriented simplices: rotate/permute evenly so the smallest
-// index comes first (orientation kept), then sort.
-template <int D>
-std::vector<std::array<std::uint32_t, D + 1>> canonical(const RunResult& r) {
-  std::vector<std::array<std::uint32_t, D + 1>> out;
-  for (std::size_t s = 0; s + D < r.simplices.size(); s += D + 1) {
-    std::array<std::uint32_t, D + 1> a;
-    for (int j = 0; j <= D; ++j) a[j] = r.simplices[s + j];
-    // Sort with parity tracking, then undo parity by swapping the last two.
-    int parity = 0;
-    for (int i = 0; i <= D; ++i)
-      for (int j = 0; j < D - i; ++j)
-        if (a[j] > a[j + 1]) {
-          std::swap(a[j], a[j + 1]);
-          parity ^= 1;
-        }
-    if (parity) std::swap(a[D - 1], a[D]);
-    out.push_back(a);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 template <int D>
 std::vector<Point<D>> uniform_points(std::size_t n, std::uint64_t seed, double scale = 1.0) {
   std::mt19937_64 g(seed);
@@ -231,12 +209,12 @@ template <int D>
 void check_all_orders(const std::vector<Point<D>>& pts, const std::string& kernel = "mp") {
   const RunResult ref = triangulate<D>(pts, kernel, "sos", "input");
   check_triangulation<D>(pts, ref, true);
-  const auto want = canonical<D>(ref);
+  const auto want = test::canonical_simplices<D>(ref.simplices);
   for (const char* order : {"random", "brio", "hilbert"})
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       const RunResult r = triangulate<D>(pts, kernel, "sos", order, seed);
       REQUIRE(r.outcome == RunResult::Outcome::ok);
-      CHECK(canonical<D>(r) == want);
+      CHECK(test::canonical_simplices<D>(r.simplices) == want);
     }
 }
 

@@ -23,18 +23,12 @@
 #include "algorithms/validate.hpp"
 #include "fuzz/generators.hpp"
 #include "predicates/mp_kernel.hpp"
+#include "tests/run_readout.hpp"
 #include "variants/run.hpp"
 
 using namespace dlab;
 
 namespace {
-
-std::uint64_t counter(const RunResult& r, const std::string& name) {
-  for (const auto& [k, v] : r.counters)
-    if (k == name) return v;
-  FAIL("no counter " << name);
-  return 0;
-}
 
 RunResult george(const PointSet& ps, const std::string& kernel, bool exact_sphere = false, bool box = false,
                  const std::string& order = "brio", std::uint64_t seed = 1) {
@@ -92,8 +86,8 @@ TEST_CASE("george: floating sphere test, always valid on every generator", "[geo
         const ValidationReport rep = validate(r.points, r.simplices);
         INFO(rep.summary());
         CHECK(rep.valid());
-        CHECK(counter(r, "valid") == 1);
-        CHECK(counter(r, "non_delaunay_facets") == rep.non_delaunay_facets());
+        CHECK(test::counter(r.counters, "valid") == 1);
+        CHECK(test::counter(r.counters, "non_delaunay_facets") == rep.non_delaunay_facets());
       }
 }
 
@@ -123,7 +117,7 @@ TEST_CASE("george: inexact kernels never crash; on easy inputs they are valid", 
         INFO(kernel << " " << dim << "D " << name << ": " << r.message);
         if (r.outcome == RunResult::Outcome::failed) CHECK(!r.message.empty());
         if (r.outcome == RunResult::Outcome::ok)  // what the registry says of it is the truth
-          CHECK(counter(r, "valid") == (validate(r.points, r.simplices).valid() ? 1u : 0u));
+          CHECK(test::counter(r.counters, "valid") == (validate(r.points, r.simplices).valid() ? 1u : 0u));
       }
     }
   }
@@ -134,9 +128,9 @@ TEST_CASE("george: the correction runs where the floating test errs, and repairs
   // wrong, so cavities must be corrected (counters), and the mesh stays valid.
   const RunResult r = george(make_points("lattice", 3, 1000, 1), "integer");
   REQUIRE(r.outcome == RunResult::Outcome::ok);
-  CHECK(counter(r, "corrected_insertions") > 0);
-  CHECK(counter(r, "removed_for_visibility") + counter(r, "removed_for_connectivity") +
-            counter(r, "added_for_zero_volume") + counter(r, "removed_for_enclosed_vertex") >
+  CHECK(test::counter(r.counters, "corrected_insertions") > 0);
+  CHECK(test::counter(r.counters, "removed_for_visibility") + test::counter(r.counters, "removed_for_connectivity") +
+            test::counter(r.counters, "added_for_zero_volume") + test::counter(r.counters, "removed_for_enclosed_vertex") >
         0);
   CHECK(validate(r.points, r.simplices).valid());
 }
@@ -152,7 +146,7 @@ TEST_CASE("george: exact sphere test gives a Delaunay triangulation with no corr
         const ValidationReport rep = validate(r.points, r.simplices);
         INFO(rep.summary());
         CHECK(rep.delaunay());
-        CHECK(counter(r, "corrected_insertions") == 0);
+        CHECK(test::counter(r.counters, "corrected_insertions") == 0);
       }
 }
 
@@ -193,10 +187,10 @@ TEST_CASE("george: enclosing box, box removed, nothing overlaps, loss reported",
     CHECK(rep[Check::orientation].count == 0);
     CHECK(rep[Check::non_manifold_facet].count == 0);
     CHECK(rep[Check::facet_same_side].count == 0);
-    CHECK(rep[Check::missing_vertex].count == counter(r, "missing_vertices"));
-    CHECK(counter(r, "box_simplices_removed") > 0);
+    CHECK(rep[Check::missing_vertex].count == test::counter(r.counters, "missing_vertices"));
+    CHECK(test::counter(r.counters, "box_simplices_removed") > 0);
     // Uniform points: some hull facets are always lost with the box's elements.
-    CHECK(counter(r, "hull_facets_missing") > 0);
-    CHECK(counter(r, "valid") == (rep.valid() ? 1u : 0u));
+    CHECK(test::counter(r.counters, "hull_facets_missing") > 0);
+    CHECK(test::counter(r.counters, "valid") == (rep.valid() ? 1u : 0u));
   }
 }

@@ -28,6 +28,7 @@
 #include "fuzz/non_delaunay.hpp"
 #include "predicates/mp_kernel.hpp"
 #include "predicates/perturbed.hpp"
+#include "tests/run_readout.hpp"
 #include "variants/run.hpp"
 
 using namespace dlab;
@@ -45,26 +46,6 @@ PointSet make_set(const std::vector<Point<D>>& pts) {
   return ps;
 }
 
-// Sorted canonical simplices (sorted indices, last two swapped for odd
-// permutations: orientation kept).
-template <int D>
-std::vector<std::array<std::uint32_t, D + 1>> canon(const std::vector<std::uint32_t>& flat) {
-  std::vector<std::array<std::uint32_t, D + 1>> out(flat.size() / (D + 1));
-  for (std::size_t s = 0; s < out.size(); ++s) {
-    auto& v = out[s];
-    for (int j = 0; j <= D; ++j) v[j] = flat[s * (D + 1) + j];
-    bool odd = false;
-    for (int a = 1; a <= D; ++a)
-      for (int b = a; b > 0 && v[b - 1] > v[b]; --b) {
-        std::swap(v[b - 1], v[b]);
-        odd = !odd;
-      }
-    if (odd) std::swap(v[D - 1], v[D]);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 RunResult go(const PointSet& ps, const std::string& algo, const std::string& kernel,
              const std::string& order = "brio", const std::string& policy = "sos", std::uint64_t seed = 1) {
   RunOptions o;
@@ -74,13 +55,6 @@ RunResult go(const PointSet& ps, const std::string& algo, const std::string& ker
   o.policy = policy;
   o.seed = seed;
   return run(ps, o);
-}
-
-std::uint64_t counter(const RunResult& r, const std::string& name) {
-  for (const auto& [k, v] : r.counters)
-    if (k == name) return v;
-  FAIL("no counter " << name);
-  return 0;
 }
 
 template <int D>
@@ -95,13 +69,13 @@ void check_exact(const std::vector<Point<D>>& pts, const std::string& what) {
     const ValidationReport rep = validate(lw.points, lw.simplices);
     INFO(rep.summary());
     CHECK(rep.delaunay());
-    const auto ref = canon<D>(lw.simplices);
-    CHECK(ref == canon<D>(bw.simplices));
+    const auto ref = test::canonical_simplices<D>(lw.simplices);
+    CHECK(ref == test::canonical_simplices<D>(bw.simplices));
     for (const std::string order : {"input", "random", "hilbert"}) {
       INFO("order " << order);
       const RunResult o = go(ps, "lawson", kernel, order, "sos", 7);
       REQUIRE(o.outcome == RunResult::Outcome::ok);
-      CHECK(canon<D>(o.simplices) == ref);
+      CHECK(test::canonical_simplices<D>(o.simplices) == ref);
     }
     const RunResult strict = go(ps, "lawson", kernel, "brio", "strict");
     REQUIRE(strict.outcome == RunResult::Outcome::ok);
@@ -142,10 +116,10 @@ TEST_CASE("lawson 3D: points outside and on the hull, coplanar with hull faces",
   check_exact<3>(pts, "two-layer grid");
   const RunResult r = go(make_set<3>(pts), "lawson", "adaptive", "input");
   REQUIRE(r.outcome == RunResult::Outcome::ok);
-  CHECK(counter(r, "insert_exterior") > 60);   // every new point but the 4 duplicates
-  CHECK(counter(r, "exterior_facets") >= counter(r, "insert_exterior"));
-  CHECK(counter(r, "flips_4_4") > 0);          // coplanar hull faces re-triangulated
-  CHECK(counter(r, "duplicates") == 4);
+  CHECK(test::counter(r.counters, "insert_exterior") > 60);   // every new point but the 4 duplicates
+  CHECK(test::counter(r.counters, "exterior_facets") >= test::counter(r.counters, "insert_exterior"));
+  CHECK(test::counter(r.counters, "flips_4_4") > 0);          // coplanar hull faces re-triangulated
+  CHECK(test::counter(r.counters, "duplicates") == 4);
   // The same points in reverse order: on hull facets and edges of the big box first.
   std::vector<Point3> rev(pts.rbegin(), pts.rend());
   check_exact<3>(rev, "two-layer grid, reversed");
@@ -177,34 +151,34 @@ TEST_CASE("lawson on random small lattices equals Bowyer-Watson", "[lawson][prop
       if (lw.outcome != RunResult::Outcome::ok) continue;
       RC_ASSERT(validate(lw.points, lw.simplices).delaunay());
       if (dim == 2)
-        RC_ASSERT(canon<2>(lw.simplices) == canon<2>(bw.simplices));
+        RC_ASSERT(test::canonical_simplices<2>(lw.simplices) == test::canonical_simplices<2>(bw.simplices));
       else
-        RC_ASSERT(canon<3>(lw.simplices) == canon<3>(bw.simplices));
+        RC_ASSERT(test::canonical_simplices<3>(lw.simplices) == test::canonical_simplices<3>(bw.simplices));
     }
   });
 }
 
 TEST_CASE("lawson counters show the insertion cases and flip types", "[lawson]") {
   const RunResult u2 = go(make_set<2>(gen::uniform<2>(500, 2)), "lawson", "adaptive");
-  CHECK(counter(u2, "insert_1_3") > 0);
-  CHECK(counter(u2, "flips_2_2") > 0);
+  CHECK(test::counter(u2.counters, "insert_1_3") > 0);
+  CHECK(test::counter(u2.counters, "flips_2_2") > 0);
   // Random order on a lattice: later points land on edges of earlier triangles.
   const RunResult l2 = go(make_set<2>(gen::lattice<2>(400)), "lawson", "adaptive", "random");
-  CHECK(counter(l2, "insert_2_4") > 0);
+  CHECK(test::counter(l2.counters, "insert_2_4") > 0);
   const RunResult l3 = go(make_set<3>(gen::lattice<3>(512)), "lawson", "adaptive", "random");
-  CHECK(counter(l3, "insert_2_6") > 0);
-  CHECK(counter(l3, "insert_n_2n") > 0);
-  CHECK(counter(l3, "flips_4_4") > 0);
-  CHECK(counter(l3, "insert_exterior") > 0);
-  CHECK(counter(l3, "insert_on_hull") > 0);  // on a hull facet or edge: split with its ghosts
-  CHECK(counter(l3, "insert_on_hull") <= counter(l3, "insert_2_6") + counter(l3, "insert_n_2n"));
-  CHECK(counter(l3, "hull_edge_removals") > 0);  // coplanar hull edges with more than 2 tetrahedra below
+  CHECK(test::counter(l3.counters, "insert_2_6") > 0);
+  CHECK(test::counter(l3.counters, "insert_n_2n") > 0);
+  CHECK(test::counter(l3.counters, "flips_4_4") > 0);
+  CHECK(test::counter(l3.counters, "insert_exterior") > 0);
+  CHECK(test::counter(l3.counters, "insert_on_hull") > 0);  // on a hull facet or edge: split with its ghosts
+  CHECK(test::counter(l3.counters, "insert_on_hull") <= test::counter(l3.counters, "insert_2_6") + test::counter(l3.counters, "insert_n_2n"));
+  CHECK(test::counter(l3.counters, "hull_edge_removals") > 0);  // coplanar hull edges with more than 2 tetrahedra below
   const RunResult u3 = go(make_set<3>(gen::uniform<3>(500, 2)), "lawson", "adaptive");
-  CHECK(counter(u3, "insert_1_4") > 0);
-  CHECK(counter(u3, "flips_2_3") > 0);
-  CHECK(counter(u3, "flips_3_2") > 0);
-  CHECK(counter(u3, "flips_total") ==
-        counter(u3, "flips_2_3") + counter(u3, "flips_3_2") + counter(u3, "flips_4_4"));
+  CHECK(test::counter(u3.counters, "insert_1_4") > 0);
+  CHECK(test::counter(u3.counters, "flips_2_3") > 0);
+  CHECK(test::counter(u3.counters, "flips_3_2") > 0);
+  CHECK(test::counter(u3.counters, "flips_total") ==
+        test::counter(u3.counters, "flips_2_3") + test::counter(u3.counters, "flips_3_2") + test::counter(u3.counters, "flips_4_4"));
 }
 
 TEST_CASE("lawson with inexact kernels: results or failure outcomes", "[lawson]") {
@@ -222,7 +196,7 @@ TEST_CASE("lawson with inexact kernels: results or failure outcomes", "[lawson]"
           continue;
         }
         if (r.outcome != RunResult::Outcome::ok) continue;
-        CHECK(counter(r, "flips_total") <= flip_bound(ps->size(), false));
+        CHECK(test::counter(r.counters, "flips_total") <= flip_bound(ps->size(), false));
         if (!validate(r.points, r.simplices).delaunay()) ++failures;
       }
     }
@@ -256,7 +230,7 @@ TEST_CASE("2D edge flip primitive relinks a quad consistently", "[lawson]") {
     for (int j = 0; j < 3; ++j) flat.push_back(m.vertex(s, j));
   });
   const std::vector<std::uint32_t> expect = {1, 2, 3, 3, 0, 1};
-  CHECK(canon<2>(flat) == canon<2>(expect));
+  CHECK(test::canonical_simplices<2>(flat) == test::canonical_simplices<2>(expect));
 }
 
 // The directly wired 3D flips keep the mesh consistent: a bipyramid over
@@ -272,7 +246,7 @@ TEST_CASE("3D 2-3 and 3-2 flip primitives relink consistently", "[lawson]") {
     m.for_each_finite([&](std::uint32_t s) {
       for (int j = 0; j < 4; ++j) flat.push_back(m.vertex(s, j));
     });
-    return canon<3>(flat);
+    return test::canonical_simplices<3>(flat);
   };
   auto apex_tet = [](const Mesh<3>& m, std::uint32_t v) {  // a finite tetrahedron holding v
     for (std::uint32_t s = 0; s < m.slots(); ++s)
@@ -301,7 +275,7 @@ TEST_CASE("3D 2-3 and 3-2 flip primitives relink consistently", "[lawson]") {
     std::sort(v.begin(), v.end());
     return v;
   };
-  CHECK(sorted(finite(m)) == sorted(canon<3>(three)));
+  CHECK(sorted(finite(m)) == sorted(test::canonical_simplices<3>(three)));
 
   // Far apexes: from tetrahedron 2+{3,4,0}, facet 340 (opposite 2) is shared
   // with 1+{3,4,0}; segment 2-1 passes beyond edge 34: 3-2 about 34.
@@ -318,7 +292,7 @@ TEST_CASE("3D 2-3 and 3-2 flip primitives relink consistently", "[lawson]") {
   REQUIRE(fl.try_flip(s2, f2) == F::Result::flipped);
   CHECK(fl.counts.f32 == 1);
   CHECK(m.check_structure().empty());
-  CHECK(sorted(finite(m)) == sorted(canon<3>(two)));
+  CHECK(sorted(finite(m)) == sorted(test::canonical_simplices<3>(two)));
 }
 
 TEST_CASE("flip-existing: 2D converges to Delaunay, 3D reports when stuck", "[lawson]") {
@@ -335,7 +309,7 @@ TEST_CASE("flip-existing: 2D converges to Delaunay, 3D reports when stuck", "[la
     CHECK(validate(std::span<const Point2>(p2), r.simplices).delaunay());
     // The perturbed Delaunay triangulation is unique: Bowyer-Watson's.
     const RunResult bw = go(make_set<2>(p2), "bowyer-watson", "mp", "input");
-    CHECK(canon<2>(r.simplices) == canon<2>(bw.simplices));
+    CHECK(test::canonical_simplices<2>(r.simplices) == test::canonical_simplices<2>(bw.simplices));
 
     const std::vector<Point3> p3 = gen::uniform<3>(150, seed);
     const std::vector<std::uint32_t> start3 = non_delaunay_start<3>(p3, seed);

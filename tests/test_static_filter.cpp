@@ -34,6 +34,7 @@
 #include "predicates/mp_kernel.hpp"
 #include "predicates/perturbed.hpp"
 #include "variants/driver.hpp"
+#include "tests/run_readout.hpp"
 #include "variants/run.hpp"
 
 using namespace dlab;
@@ -262,23 +263,6 @@ struct NoPromise : BowyerWatson<K, D> {
   static constexpr bool kernel_sees_given_points_only = false;
 };
 
-std::vector<std::array<std::uint32_t, 4>> sorted_cells(const std::vector<std::uint32_t>& s) {
-  std::vector<std::array<std::uint32_t, 4>> cells;
-  for (std::size_t i = 0; i + 4 <= s.size(); i += 4) {
-    std::array<std::uint32_t, 4> c{s[i], s[i + 1], s[i + 2], s[i + 3]};
-    std::sort(c.begin(), c.end());
-    cells.push_back(c);
-  }
-  std::sort(cells.begin(), cells.end());
-  return cells;
-}
-
-std::uint64_t counter(const Counters& c, const std::string& name) {
-  for (const auto& [n, v] : c)
-    if (n == name) return v;
-  return 0;
-}
-
 }  // namespace
 
 TEST_CASE("every algorithm passes its kernel only the given points", "[static]") {
@@ -315,22 +299,22 @@ TEST_CASE("the driver fits the static filter only on the promise", "[static]") {
   ps.p3 = pts;
   RunOptions o;
   o.kernel = "mp";
-  const auto want = sorted_cells(run(ps, o).simplices);
+  const auto want = test::canonical_simplices<3>(run(ps, o).simplices);
   for (const char* algo_name : {"bowyer-watson", "lawson", "george", "tanemura"}) {
     o.algorithm = algo_name;
     o.kernel = "adaptive";
     const RunResult got = run(ps, o);
-    const std::uint64_t calls = counter(got.predicates, "orient3d");
-    const std::uint64_t by_static = counter(got.predicates, "orient3d.static");
+    const std::uint64_t calls = test::counter(got.predicates, "orient3d");
+    const std::uint64_t by_static = test::counter(got.predicates, "orient3d.static");
     INFO(algo_name << ": " << by_static << " of " << calls << " orient3d calls answered static");
     CHECK(calls > 0);
     CHECK(by_static > calls / 2);
-    CHECK(sorted_cells(got.simplices) == want);
+    CHECK(test::canonical_simplices<3>(got.simplices) == want);
   }
   // The same input without the promise: never the static stage.
   RunOptions bw;
   const RunResult unfitted = driver_detail::run_dimension<NoPromise, AdaptiveKernel, 3>(pts, bw, true);
-  CHECK(counter(unfitted.predicates, "orient3d") > 0);
-  CHECK(counter(unfitted.predicates, "orient3d.static") == 0);
-  CHECK(sorted_cells(unfitted.simplices) == want);
+  CHECK(test::counter(unfitted.predicates, "orient3d") > 0);
+  CHECK(test::counter(unfitted.predicates, "orient3d.static") == 0);
+  CHECK(test::canonical_simplices<3>(unfitted.simplices) == want);
 }
