@@ -1,15 +1,20 @@
 // Exact predicates for points with small integer coordinates, in plain doubles.
 //
-// Certificate. (1) Every coordinate x passes is_int: (x + 1.5*2^52) - 1.5*2^52
-// == x. That value is always an integer or non-finite (for |x| <= 2^51 it is x
-// rounded to an integer; beyond, every double is an integer), so a finite x
-// that passes is an integer; NaN never passes; +-inf passes. Every integer of
-// magnitude <= 2^51 passes (some larger ones are refused: that is only slower). (2) Every
-// coordinate difference d = fl(a - e) used by the determinant has |d| <= B
-// (B <= 2^52), and the reference point e (the one subtracted from all others)
-// is finite. Then every difference is exact: an infinite a gives |d| = inf,
-// refused by (2) (with e finite no difference is NaN, which a maximum could
-// drop); for finite integers a, e, either
+// Certificate. (1) Every coordinate x passes is_int: with a = |x| and c = 2^52,
+// fl(fl(a + c) - c) == a. For a < 2^52, a + c lies in [2^52, 2^53], where
+// doubles are spaced by 1, so fl(a + c) is an integer n (a rounded) and n - c
+// is exact (Sterbenz): the test is "a is an integer". For a >= 2^52 (every
+// such double is an integer) fl(a + c) and fl(n - c) are integers, so a pass
+// still means "integer"; some of these are refused (only slower). Hence: a
+// finite x that passes is an integer; every integer with |x| <= 2^52 passes;
+// NaN never passes; +-inf passes (refused by (2)). Taking |x| first matters:
+// without it, x in [-2^52, -2^51) puts x + c in [2^51, 2^52), where doubles
+// are spaced by 1/2, and half-integers such as -2^51 - 7.5 passed (issue 17).
+// (2) Every coordinate difference d = fl(a - e) used by the determinant has
+// |d| <= B (B <= 2^52), and the reference point e (the one subtracted from all
+// others) is finite. Then every difference is exact: an infinite a gives |d| =
+// inf, refused by (2) (with e finite no difference is NaN, which a maximum
+// could drop); for finite integers a, e, either
 // e/2 <= a <= 2e (same sign; Sterbenz: a - e is exact) or |a - e| >= max(|a|,
 // |e|) / 2, so |a|, |e| <= 2B + 1 <= 2^53 and the integer a - e, of magnitude
 // <= B + 1, is a double. With exact integer differences bounded by B, every
@@ -17,6 +22,7 @@
 // figure listed; while that is <= 2^53 no operation rounds, so the computed
 // determinant IS the exact determinant and its sign is exact -- zero included.
 // No tolerance anywhere: an error-free evaluation, not a filter.
+// Tests: tests/test_small_integer.cpp (each claim above, scalar and SSE2).
 //
 // This is what the symbolic perturbation needs on lattices (grids, cubes):
 // there most in-circle / in-sphere tests are exactly zero, and proving a zero
@@ -64,24 +70,41 @@ static_assert(6 * o3_bound * o3_bound * o3_bound <= two53);
 static_assert(72 * is_bound * is_bound * is_bound * is_bound * is_bound <= two53);
 static_assert(2 * is_bound + 1 <= two53 && 2 * o2_bound + 1 <= two53);  // (2) above
 
-// Integer or infinite (see the certificate above); -fno-fast-math keeps
-// (x + c) - c from being simplified.
+// Integer or infinite (certificate (1) above); -fno-fast-math keeps
+// (a + c) - c from being simplified.
+inline constexpr double int_shift = 0x1p52;
 inline bool is_int(double x) {
-  constexpr double c = 0x1.8p52;
-  return (x + c) - c == x;
+  const double a = std::fabs(x);
+  return (a + int_shift) - int_shift == a;
 }
 
 // Every coordinate of the N points passes is_int, and the last point (the
-// reference) is finite, |x| <= 2^52. SSE2: the same operations two lanes at a
-// time (each lane rounds as its scalar twin); scalar otherwise. Both leave
-// after the reference's x and y when those fail (the common case off lattices).
+// reference) is finite, |x| <= 2^52. Two evaluations with the same operations:
+// the scalar one and SSE2, two lanes at a time (each lane rounds as its scalar
+// twin); all_int uses SSE2 where the target has it. Both leave after the
+// reference's x and y when those fail (the common case off lattices).
 template <int D, int N>
-inline bool all_int(const Point<D>* const (&p)[N]) {
+inline bool all_int_scalar(const Point<D>* const (&p)[N]) {
+  bool ok = true;
+  for (int j = 0; j < D; ++j) ok &= is_int((*p[N - 1])[j]) & (std::fabs((*p[N - 1])[j]) <= 0x1p52);
+  if (!ok) return false;
+  for (int i = 0; i < N - 1; ++i) {
+    for (int j = 0; j < D; ++j) ok &= is_int((*p[i])[j]);
+    if (!ok) return false;
+  }
+  return true;
+}
+
 #if defined(__SSE2__)
-  const __m128d c = _mm_set1_pd(0x1.8p52);
-  auto integral = [&](__m128d v) { return _mm_cmpeq_pd(_mm_sub_pd(_mm_add_pd(v, c), c), v); };
-  const __m128d ref = _mm_loadu_pd(p[N - 1]->data());  // (x, y) of the reference
+template <int D, int N>
+inline bool all_int_sse2(const Point<D>* const (&p)[N]) {
+  const __m128d c = _mm_set1_pd(int_shift);
   const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  auto integral = [&](__m128d v) {
+    const __m128d a = _mm_and_pd(v, abs_mask);
+    return _mm_cmpeq_pd(_mm_sub_pd(_mm_add_pd(a, c), c), a);
+  };
+  const __m128d ref = _mm_loadu_pd(p[N - 1]->data());  // (x, y) of the reference
   __m128d ok = _mm_cmple_pd(_mm_and_pd(ref, abs_mask), _mm_set1_pd(0x1p52));
   ok = _mm_and_pd(ok, integral(ref));
   // Off lattices (uniform points) the answer is known here: leave early.
@@ -98,15 +121,15 @@ inline bool all_int(const Point<D>* const (&p)[N]) {
     }
   }
   return _mm_movemask_pd(ok) == 3;
+}
+#endif
+
+template <int D, int N>
+inline bool all_int(const Point<D>* const (&p)[N]) {
+#if defined(__SSE2__)
+  return all_int_sse2<D, N>(p);
 #else
-  bool ok = true;
-  for (int j = 0; j < D; ++j) ok &= is_int((*p[N - 1])[j]) & (std::fabs((*p[N - 1])[j]) <= 0x1p52);
-  if (!ok) return false;
-  for (int i = 0; i < N - 1; ++i) {
-    for (int j = 0; j < D; ++j) ok &= is_int((*p[i])[j]);
-    if (!ok) return false;
-  }
-  return true;
+  return all_int_scalar<D, N>(p);
 #endif
 }
 

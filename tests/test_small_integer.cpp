@@ -202,3 +202,87 @@ TEST_CASE("small_integer: the symbolic walk equals perturbed<mp>, ties included"
   CHECK_FALSE(small_integer::incircle_sos({4097, 0}, {0, 1}, {1, 1}, {0, 0}).known);
   CHECK(small_integer::incircle_sos({4096, 0}, {0, 1}, {1, 1}, {0, 0}).known);
 }
+
+// Certificate (1) of predicates/small_integer.hpp, claim by claim, against
+// std::trunc (an independent integer test): in every binade from the smallest
+// subnormal to 2^1023, both signs, at the binade's edges, one and two ulps
+// inside, and at the half-way points between integers where they exist.
+TEST_CASE("small_integer: is_int is exact on both signs in every binade", "[small_integer]") {
+  using small_integer::is_int;
+  const double inf = std::numeric_limits<double>::infinity();
+  int half_integers = 0;
+  auto check = [&](double x) {
+    const bool integer = std::trunc(x) == x;
+    // A pass means an integer; every integer up to 2^52 passes.
+    if (is_int(x)) REQUIRE(integer);
+    if (integer && std::fabs(x) <= 0x1p52) REQUIRE(is_int(x));
+    // The scalar and SSE2 evaluations of all_int agree (the reference point
+    // is the first one here, bounded by 2^52, the second may be anything).
+    const Point2 p{x, 0}, ref{0, 0}, q{x, x};
+    const Point2* const pts[2] = {&p, &ref};
+    const Point2* const refs[2] = {&ref, &q};
+    const bool scalar = small_integer::all_int_scalar<2, 2>(pts);
+    REQUIRE(scalar == is_int(x));
+    REQUIRE(small_integer::all_int_scalar<2, 2>(refs) == (is_int(x) && std::fabs(x) <= 0x1p52));
+#if defined(__SSE2__)
+    REQUIRE(small_integer::all_int_sse2<2, 2>(pts) == scalar);
+    REQUIRE(small_integer::all_int_sse2<2, 2>(refs) ==
+            small_integer::all_int_scalar<2, 2>(refs));
+    const Point3 p3{0, 0, x}, r3{0, 0, 0};
+    const Point3* const pts3[2] = {&p3, &r3};
+    REQUIRE(small_integer::all_int_sse2<3, 2>(pts3) == small_integer::all_int_scalar<3, 2>(pts3));
+#endif
+  };
+  for (int e = -1074; e <= 1023; ++e) {
+    const double edge = std::ldexp(1.0, e);
+    for (double s : {1.0, -1.0}) {
+      const double x = s * edge;
+      for (double y : {x, std::nextafter(x, 0.0), std::nextafter(x, 2 * x),
+                       std::nextafter(std::nextafter(x, 2 * x), 2 * x),
+                       std::nextafter(std::nextafter(x, 0.0), 0.0)})
+        check(y);
+      // Half-integers exist up to 2^52: x + 1/2 and the largest one in the binade.
+      if (e >= 1 && e <= 51) {
+        const double h = x + s * 0.5, top = s * (2 * edge - 0.5);
+        REQUIRE(std::trunc(h) != h);
+        REQUIRE(std::trunc(top) != top);
+        check(h);
+        check(top);
+        check(x + s * 1.0);
+        half_integers += 2;
+      }
+    }
+  }
+  CHECK(half_integers == 2 * 2 * 51);
+  for (double x : {0.0, -0.0, inf, -inf}) CHECK(is_int(x));
+  CHECK_FALSE(is_int(std::numeric_limits<double>::quiet_NaN()));
+}
+
+// Issue 17's witness: half-integers in [-2^52, -2^51) used to pass the
+// certificate, and the SoS keys truncated them.
+TEST_CASE("small_integer: the binade [-2^52, -2^51) witness", "[small_integer]") {
+  const perturbed<AdaptiveKernel> ad;
+  const perturbed<MpKernel> pm;
+  const double x0 = -2251799813685256.0, x1 = -2251799813685255.5;  // -(2^51 + 8), -(2^51 + 7.5)
+  const Point2 p[4] = {{x0, 1}, {x0, 0}, {x1, 0}, {x1, 1}};
+  CHECK_FALSE(small_integer::incircle_sos(p[0], p[1], p[2], p[3]).known);
+  CHECK_FALSE(small_integer::orient2d(p[0], p[1], p[2]).known);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 4; ++k)
+        for (int l = 0; l < 4; ++l) {
+          if (i == j || i == k || i == l || j == k || j == l || k == l) continue;
+          REQUIRE(ad.incircle(p[i], p[j], p[k], p[l]) == pm.incircle(p[i], p[j], p[k], p[l]));
+          REQUIRE(ad.orient2d(p[i], p[j], p[k]) == pm.orient2d(p[i], p[j], p[k]));
+        }
+  // The same in 3D: a unit cube of half-integers in the binade.
+  Point3 c[8];
+  for (int i = 0; i < 8; ++i) c[i] = {i & 1 ? x1 : x0, i & 2 ? x1 - 1 : x0 + 1, i & 4 ? 2.0 : 1.0};
+  for (int t = 0; t < 8 * 7 * 6 * 5; ++t) {
+    const int a = t % 8, b = (a + 1 + t / 8 % 7) % 8;
+    const int i2 = (t / 56) % 8, i3 = (t / 3) % 8, i4 = (t / 5) % 8;
+    REQUIRE(ad.insphere(c[a], c[b], c[i2], c[i3], c[i4]) ==
+            pm.insphere(c[a], c[b], c[i2], c[i3], c[i4]));
+    REQUIRE(ad.orient3d(c[a], c[b], c[i2], c[i3]) == pm.orient3d(c[a], c[b], c[i2], c[i3]));
+  }
+}
