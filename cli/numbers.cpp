@@ -16,6 +16,16 @@ bool is_hex_digit(char c) {
 }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+// True if every digit before the exponent ('e' decimal, 'p' hex) is 0, i.e.
+// the literal (already read whole by from_chars) denotes zero.
+bool mantissa_is_zero(std::string_view body, bool hex) {
+  for (char c : body) {
+    if (hex ? (c == 'p' || c == 'P') : (c == 'e' || c == 'E')) break;
+    if (c != '0' && c != '.') return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 ParsedDouble parse_double(std::string_view tok) {
@@ -50,19 +60,22 @@ ParsedDouble parse_double(std::string_view tok) {
   if (r.ec == std::errc::result_out_of_range) {
     // libstdc++ reports both overflow and underflow to zero this way and leaves
     // v unset (a subnormal result comes back normally). strtod, in the C locale
-    // (this program never calls setlocale), says which one it was and gives the
-    // correctly rounded value: a signed zero after an underflow.
-    const std::string copy(tok);
-    const double s = std::strtod(copy.c_str(), nullptr);
-    if (std::isinf(s)) {
+    // (this program never calls setlocale), tells them apart: infinity after an
+    // overflow, the correctly rounded value (a zero) after an underflow.
+    const std::string copy = (hex ? "0x" : "") + std::string(body);
+    v = std::strtod(copy.c_str(), nullptr);
+    if (std::isinf(v)) {
       out.status = ParseStatus::out_of_range;
       return out;
     }
-    out.status = ParseStatus::ok;
-    out.value = s;
+  } else if (r.ec != std::errc()) {
     return out;
   }
-  if (r.ec != std::errc()) return out;
+  // Whatever reported it, a zero from a literal with a nonzero digit is an underflow.
+  if (v == 0 && !mantissa_is_zero(body, hex)) {
+    out.status = ParseStatus::underflow;
+    return out;
+  }
   out.status = ParseStatus::ok;
   out.value = negative ? -v : v;
   return out;
@@ -89,6 +102,8 @@ std::string describe(ParseStatus status, std::string_view token) {
     case ParseStatus::nan: r = "NaN coordinate "; r += t; break;
     case ParseStatus::infinity: r = "infinite coordinate "; r += t; break;
     case ParseStatus::out_of_range: r = "coordinate "; r += t; r += " overflows to infinity"; break;
+    case ParseStatus::underflow:
+      r = "coordinate "; r += t; r += " is not zero but rounds to zero (|x| <= 2^-1075)"; break;
     case ParseStatus::malformed: r = "unparsable number "; r += t; break;
   }
   return r;

@@ -9,7 +9,7 @@
 
 namespace dlab::io {
 
-enum class ParseStatus { ok, nan, infinity, out_of_range, malformed };
+enum class ParseStatus { ok, nan, infinity, out_of_range, underflow, malformed };
 
 struct ParsedDouble {
   ParseStatus status = ParseStatus::malformed;
@@ -18,8 +18,11 @@ struct ParsedDouble {
 
 // One token, as C's strtod would read the whole of it: optional sign, then a
 // decimal float ("1.5e-3", ".5", "7.") or a C99 hexadecimal float ("0x1.8p-3",
-// "0X1P4", "0x.8"). A finite value that underflows gives the correctly rounded
-// result (subnormal or signed zero); a value that overflows is out_of_range.
+// "0X1P4", "0x.8"), correctly rounded to nearest, ties to even. Rejected alike,
+// since neither gives the number written: a value that rounds to infinity
+// (|x| >= 2^1024 - 2^970) is out_of_range, and a nonzero literal that rounds to
+// zero (|x| <= 2^-1075, e.g. "1e-400", "0x1p-1075") is underflow. A subnormal
+// result is ok, and so is a zero literal ("0", "-0", "0e999": a signed zero).
 // "nan"/"inf"/"infinity" are recognised and reported as such.
 ParsedDouble parse_double(std::string_view token);
 

@@ -24,19 +24,21 @@ bool is_separator(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == ',' || c == '\v' || c == '\f';
 }
 
-// Splits the input (text in memory, or a stream read line by line so that a
+// Splits the input (text in memory, or a stream read in chunks so that a
 // large file is never held whole in memory) into lines without '\n', drops
 // comments, and returns the tokens of each line with its 1-based number. The
-// tokens stay valid until the next call.
+// tokens stay valid until the next call. A line longer than kMaxLineBytes is
+// refused as soon as the limit is passed, so the reader's memory beyond the
+// points stays below about 9 x kMaxLineBytes (the line, and a 16-byte token per
+// 2 bytes of it) + one 64 KiB chunk, whatever the input.
 class LineSplitter {
  public:
-  explicit LineSplitter(std::string_view text) : text_(text) {}
-  explicit LineSplitter(std::istream& in) : in_(&in) {}
+  LineSplitter(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+  LineSplitter(std::istream& in, const std::string& name) : in_(&in), name_(name) {}
   // Next line that has at least one token; false at the end of the input.
   bool next(std::vector<std::string_view>& tokens, std::size_t& line_no) {
     std::string_view line;
     while (next_line(line)) {
-      ++line_;
       if (auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
       tokens.clear();
       std::size_t i = 0;
@@ -57,12 +59,13 @@ class LineSplitter {
   std::size_t lines_seen() const { return line_ == 0 ? 1 : line_; }
 
  private:
+  [[noreturn]] void too_long() const {
+    fail(name_, line_, "line longer than " + std::to_string(kMaxLineBytes) +
+                           " bytes (a point needs a few dozen): not a point set?");
+  }
+  // The next line, counted in line_; false at the end of the input.
   bool next_line(std::string_view& line) {
-    if (in_) {
-      if (!std::getline(*in_, buffer_)) return false;
-      line = buffer_;
-      return true;
-    }
+    if (in_) return next_stream_line(line);
     if (done_) return false;
     std::size_t end = text_.find('\n', pos_);
     if (end == std::string_view::npos) {
@@ -70,14 +73,60 @@ class LineSplitter {
       done_ = true;
       if (end == pos_) return false;  // nothing after the last newline
     }
+    ++line_;
+    if (end - pos_ > kMaxLineBytes) too_long();
     line = text_.substr(pos_, end - pos_);
     pos_ = end + 1;
     return true;
   }
+  // As std::getline, but a line is a view into the chunk when it lies within
+  // one, and is copied (at most kMaxLineBytes) only when it spans chunks.
+  bool next_stream_line(std::string_view& line) {
+    line_buffer_.clear();
+    bool any = false;  // a byte of this line was read
+    for (;;) {
+      if (pos_ == chunk_end_) {
+        if (chunk_.empty()) chunk_.resize(kChunkBytes);
+        in_->read(chunk_.data(), static_cast<std::streamsize>(chunk_.size()));
+        chunk_end_ = static_cast<std::size_t>(in_->gcount());
+        pos_ = 0;
+        if (chunk_end_ == 0) {  // end of input (or a read error, checked by the caller)
+          if (!any) return false;
+          ++line_;
+          line = line_buffer_;
+          return true;
+        }
+      }
+      any = true;
+      const char* begin = chunk_.data() + pos_;
+      const auto* nl = static_cast<const char*>(std::memchr(begin, '\n', chunk_end_ - pos_));
+      const std::size_t len = nl ? static_cast<std::size_t>(nl - begin) : chunk_end_ - pos_;
+      if (line_buffer_.size() + len > kMaxLineBytes) {
+        ++line_;
+        too_long();
+      }
+      if (nl && line_buffer_.empty()) {
+        line = std::string_view(begin, len);
+      } else {
+        line_buffer_.append(begin, len);
+        line = line_buffer_;
+      }
+      pos_ += len;
+      if (nl) {
+        ++pos_;
+        ++line_;
+        return true;
+      }
+    }
+  }
 
+  static constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
   std::string_view text_;
   std::istream* in_ = nullptr;
-  std::string buffer_;
+  const std::string& name_;
+  std::vector<char> chunk_;
+  std::size_t chunk_end_ = 0;
+  std::string line_buffer_;
   std::size_t pos_ = 0;
   std::size_t line_ = 0;
   bool done_ = false;
@@ -217,28 +266,27 @@ std::string read_file(const std::string& path) {
 }
 
 PointSet parse_points(std::string_view text, const std::string& name, bool node_format) {
-  LineSplitter lines(text);
+  LineSplitter lines(text, name);
   return node_format ? parse_node(lines, name) : parse_plain(lines, name);
 }
 
-PointSet read_points(const std::string& path) {
-  const std::string name = display_name(path);
-  std::ifstream file;
-  std::istream* in = &std::cin;
-  if (path != "-") {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read: is a directory");
-    file.open(path, std::ios::binary);
-    if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
-    in = &file;
-  }
-  LineSplitter lines(*in);
-  PointSet ps = path != "-" && is_node_file(path) ? parse_node(lines, name) : parse_plain(lines, name);
-  if (in->bad()) throw InputError(name + ": cannot read: input error");
+PointSet read_points(std::istream& in, const std::string& name, bool node_format) {
+  LineSplitter lines(in, name);
+  PointSet ps = node_format ? parse_node(lines, name) : parse_plain(lines, name);
+  if (in.bad()) throw InputError(name + ": cannot read: input error");
   // The vectors grew by doubling: give the slack back before triangulating.
   ps.p2.shrink_to_fit();
   ps.p3.shrink_to_fit();
   return ps;
+}
+
+PointSet read_points(const std::string& path) {
+  if (path == "-") return read_points(std::cin, display_name(path), false);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read: is a directory");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
+  return read_points(file, path, is_node_file(path));
 }
 
 }  // namespace dlab::io

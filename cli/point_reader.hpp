@@ -10,6 +10,8 @@
 // Every problem is an InputError whose message is "FILE:LINE: problem" (or
 // "FILE: problem" when no line applies, e.g. a file that cannot be opened).
 #pragma once
+#include <cstddef>
+#include <istream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -23,8 +25,16 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The longest line the readers accept (a comment included): a point needs a
+// few dozen bytes, so a longer line is refused, as "FILE:LINE: line longer than
+// ...", before more of it is read; the reader's memory stays bounded.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
 // "-" reads standard input (always the plain text format).
 PointSet read_points(const std::string& path);
+
+// Reads a stream in chunks (never whole); `name` is used in messages only.
+PointSet read_points(std::istream& in, const std::string& name, bool node_format);
 
 // Parses text already in memory; `name` is used in messages only.
 // Never crashes on any byte sequence: every failure is an InputError.

@@ -50,6 +50,37 @@ double random_double(rc::Gen<std::uint64_t> g = rc::gen::arbitrary<std::uint64_t
   }
 }
 
+
+// Decimal digit strings of big non-negative integers (most significant first),
+// for literals that sit exactly on a rounding boundary.
+std::string times(const std::string& a, int k) {
+  std::string r(a.size(), '0');
+  int carry = 0;
+  for (std::size_t i = a.size(); i-- > 0;) {
+    const int d = (a[i] - '0') * k + carry;
+    r[i] = static_cast<char>('0' + d % 10);
+    carry = d / 10;
+  }
+  for (; carry; carry /= 10) r.insert(r.begin(), static_cast<char>('0' + carry % 10));
+  return r;
+}
+std::string power(int base, int n) {
+  std::string r = "1";
+  while (n-- > 0) r = times(r, base);
+  return r;
+}
+std::string minus(std::string a, const std::string& b) {  // a >= b
+  int borrow = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::size_t ia = a.size() - 1 - i;
+    int d = (a[ia] - '0') - borrow - (i < b.size() ? b[b.size() - 1 - i] - '0' : 0);
+    borrow = d < 0;
+    a[ia] = static_cast<char>('0' + (d + 10 * borrow));
+  }
+  const std::size_t nz = a.find_first_not_of('0');
+  return nz == std::string::npos ? "0" : a.substr(nz);
+}
+
 }  // namespace
 
 TEST_CASE("parse_double reads decimal and C99 hexadecimal floats exactly", "[io]") {
@@ -67,15 +98,28 @@ TEST_CASE("parse_double reads decimal and C99 hexadecimal floats exactly", "[io]
   CHECK(parsed("-2.5E-1") == -0.25);
   CHECK(parsed("0.1") == 0.1);
   CHECK(parsed("4e-324") == std::numeric_limits<double>::denorm_min());
-  // Underflow gives the correctly rounded value, as strtod does.
-  CHECK(same_bits(parsed("1e-400"), 0.0));
-  CHECK(same_bits(parsed("-1e-400"), -0.0));
-  CHECK(same_bits(parsed("0x1p-1075"), 0.0));                      // tie, to even: 0
+  // Subnormal results are kept, correctly rounded.
   CHECK(parsed("0x1.8p-1074") == 2 * std::numeric_limits<double>::denorm_min());  // tie, to even
-  CHECK(same_bits(parsed("-0"), -0.0));
-  // Just below and just above half the smallest subnormal.
-  CHECK(same_bits(parsed("-2.4703282292062327e-324"), -0.0));
+  CHECK(parsed("0x1.0000000000001p-1075") == std::numeric_limits<double>::denorm_min());
   CHECK(parsed("2.4703282292062328e-324") == std::numeric_limits<double>::denorm_min());
+  // Zero literals give a signed zero, whatever their exponent.
+  CHECK(same_bits(parsed("-0"), -0.0));
+  CHECK(same_bits(parsed("0e99999"), 0.0));
+  CHECK(same_bits(parsed("-0.000e-99999"), -0.0));
+  CHECK(same_bits(parsed("-0x0.000p+99999"), -0.0));
+}
+
+TEST_CASE("a nonzero literal that rounds to zero is rejected as an overflow is", "[io]") {
+  for (const char* tiny : {"1e-400", "-1e-400", "0x1p-1075", "-0x1p-1075", "0x1p-1076", "0x.8p-1074",
+                           "-2.4703282292062327e-324", "0.00000000000000000000000001e-300",
+                           "1e-99999", "0x0.0000000000000000001p-1022", "-0x0.00Ep-1070"}) {
+    INFO(tiny);
+    CHECK(parse_double(tiny).status == ParseStatus::underflow);
+  }
+  CHECK_THAT(describe(ParseStatus::underflow, "1e-400"),
+             Catch::Equals("coordinate '1e-400' is not zero but rounds to zero (|x| <= 2^-1075)"));
+  CHECK_THAT(error_of("1 2\n3 -0x1p-1080\n"),
+             Catch::Contains("in.txt:2: coordinate '-0x1p-1080' is not zero but rounds to zero"));
 }
 
 TEST_CASE("parse_double classifies what it rejects", "[io]") {
@@ -116,6 +160,87 @@ TEST_CASE("parse_double agrees with glibc strtod on random decimal and hex strin
   });
 }
 
+TEST_CASE("parse_double on rounding boundaries agrees with strtod and with the exact values", "[io]") {
+  constexpr double tiny = std::numeric_limits<double>::denorm_min();
+  constexpr double big = std::numeric_limits<double>::max();
+  const double inf = std::numeric_limits<double>::infinity();
+  // Exact decimal literals: 2^-1075 = 5^1075 e-1075 (half the smallest
+  // subnormal) and 2^1024 - 2^970 (halfway from the largest double to 2^1024).
+  const std::string half_tiny = power(5, 1075);
+  const std::string half_over = minus(power(2, 1024), power(2, 970));
+  struct Edge {
+    std::string literal;
+    double exact;  // the correctly rounded value (infinity: overflow; 0 from a nonzero literal: underflow)
+  };
+  const std::vector<Edge> edges{
+      {half_tiny + "e-1075", 0},                                 // tie, to even: 0
+      {"-" + half_tiny + "e-1075", -0.0},
+      {minus(half_tiny, "1") + "e-1075", 0},                     // below the tie
+      {half_tiny + "1e-1076", tiny},                             // above the tie
+      {times(half_tiny, 3) + "e-1075", 2 * tiny},                // 1.5 ulp: tie, to even
+      {half_over, inf},                                          // tie, to even: 2^1024
+      {minus(half_over, "1"), big},
+      {"-" + minus(half_over, "1") + ".99999999999999999999", -big},
+      {"1.7976931348623157e308", big},
+      {"1.7976931348623159e308", inf},
+      {"9007199254740993", 9007199254740992.0},                  // 2^53 + 1: tie, to even
+      {"9007199254740993.00000000000000000000000001", 9007199254740994.0},
+      {"9007199254740995", 9007199254740996.0},                  // 2^53 + 3: tie, to even
+      {"9007199254740991", 9007199254740991.0},                  // 2^53 - 1: exact
+      {"0.1", 0.1},
+      {"0.1000000000000000055511151231257827021181583404541015625", 0.1},  // 0.1's exact value
+      {"2.2250738585072011e-308", 0x0.fffffffffffffp-1022},      // largest subnormal
+      {"2.2250738585072014e-308", 0x1p-1022},                    // smallest normal
+      {"0x1.00000000000008p0", 1.0},                             // hex tie, to even
+      {"0x1.00000000000018p0", 0x1.0000000000002p0},
+      {"0x1.000000000000080000000001p0", 0x1.0000000000001p0},
+      {"0x1.fffffffffffff8p1023", inf},
+      {"0x1.fffffffffffff7ffffp1023", big},
+      {"0x1p-1075", 0},
+      {"0x1.0000000000001p-1075", tiny},
+      {"0x3p-1076", tiny},                                       // 0.75 ulp
+  };
+  for (const Edge& e : edges) {
+    INFO(e.literal.substr(0, 60) << " (" << e.literal.size() << " characters)");
+    const ParsedDouble p = parse_double(e.literal);
+    const double ref = std::strtod(e.literal.c_str(), nullptr);
+    CHECK(same_bits(ref, e.exact));  // glibc agrees with the exact value ...
+    if (std::isinf(e.exact)) {       // ... and so do we
+      CHECK(p.status == ParseStatus::out_of_range);
+    } else if (e.exact == 0) {
+      CHECK(p.status == ParseStatus::underflow);
+    } else {
+      REQUIRE(p.status == ParseStatus::ok);
+      CHECK(same_bits(p.value, e.exact));
+    }
+  }
+}
+
+TEST_CASE("format_decimal: the shortest decimal, read back bit for bit", "[io]") {
+  // Expected strings: the shortest decimals that round to each value (known
+  // values of IEEE binary64), in std::to_chars's plain or scientific form.
+  const std::pair<double, const char*> cases[] = {
+      {0.1, "0.1"},
+      {-0.0, "-0"},
+      {0.0, "0"},
+      {std::numeric_limits<double>::denorm_min(), "5e-324"},
+      {-2 * std::numeric_limits<double>::denorm_min(), "-1e-323"},
+      {0x0.fffffffffffffp-1022, "2.225073858507201e-308"},
+      {0x1p-1022, "2.2250738585072014e-308"},
+      {std::numeric_limits<double>::max(), "1.7976931348623157e+308"},
+      {-std::numeric_limits<double>::max(), "-1.7976931348623157e+308"},
+      {9007199254740992.0, "9007199254740992"},  // 2^53
+      {9007199254740994.0, "9007199254740994"},  // 2^53 + 2, the next double
+      {9007199254740991.0, "9007199254740991"},  // 2^53 - 1, the previous one
+      {0.30000000000000004, "0.30000000000000004"},
+  };
+  for (const auto& [x, text] : cases) {
+    INFO(text);
+    CHECK(format_decimal(x) == text);
+    CHECK(same_bits(parsed(format_decimal(x)), x));
+  }
+}
+
 TEST_CASE("format_hex on the special cases", "[io]") {
   CHECK(format_hex(0.0) == "0x0p+0");
   CHECK(format_hex(-0.0) == "-0x0p+0");
@@ -151,6 +276,96 @@ TEST_CASE("plain INPUT errors name the file, the line and the problem", "[io]") 
   CHECK_THAT(error_of("1 2\n3 4\x01\n"), Catch::Contains("in.txt:2: unparsable number '4\\x01'"));
   CHECK_THAT(error_of(""), Catch::Contains("in.txt:1: empty input"));
   CHECK_THAT(error_of("# nothing\n\n   \n"), Catch::Contains("in.txt:3: empty input"));
+}
+
+namespace {
+// An input stream of `head`, then `long_bytes` bytes of "1 ", then "\n" and
+// `tail`, generated on the fly; counts the bytes the reader pulled from it.
+class LongLineBuf : public std::streambuf {
+ public:
+  LongLineBuf(std::string head, std::size_t long_bytes, std::string tail)
+      : head_(std::move(head)), tail_("\n" + std::move(tail)), long_(long_bytes) {}
+  std::size_t served() const { return served_; }
+
+ protected:
+  int_type underflow() override {
+    chunk_.clear();
+    const std::size_t total = head_.size() + long_ + tail_.size();
+    for (; pos_ < total && chunk_.size() < 4096; ++pos_) {
+      if (pos_ < head_.size()) chunk_ += head_[pos_];
+      else if (pos_ < head_.size() + long_) chunk_ += (pos_ - head_.size()) % 2 ? ' ' : '1';
+      else chunk_ += tail_[pos_ - head_.size() - long_];
+    }
+    if (chunk_.empty()) return traits_type::eof();
+    served_ += chunk_.size();
+    setg(chunk_.data(), chunk_.data(), chunk_.data() + chunk_.size());
+    return traits_type::to_int_type(chunk_[0]);
+  }
+
+ private:
+  std::string head_, tail_, chunk_;
+  std::size_t long_, pos_ = 0, served_ = 0;
+};
+
+// A plain-text line of exactly `bytes` bytes holding the point (1, 2).
+std::string padded_line(std::size_t bytes) { return "1" + std::string(bytes - 2, ' ') + "2"; }
+}  // namespace
+
+TEST_CASE("a line longer than kMaxLineBytes is refused before more of it is read", "[io]") {
+  // An 8 MiB line (a 200 MB one behaves alike: the reader stops at the limit).
+  LongLineBuf buf("0 0\n# comment\n", 8 * kMaxLineBytes, "1 1\n");
+  std::istream in(&buf);
+  try {
+    read_points(in, "long.txt", false);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Equals("long.txt:3: line longer than 1048576 bytes (a point needs a few "
+                                       "dozen): not a point set?"));
+  }
+  // The limit plus the chunks in flight (64 KiB each), not the whole line.
+  CHECK(buf.served() <= kMaxLineBytes + (std::size_t{1} << 18));
+  // The same line in memory.
+  const std::string text = "0 0\n" + std::string(kMaxLineBytes + 1, ' ') + "\n";
+  CHECK_THAT(error_of(text), Catch::StartsWith("in.txt:2: line longer than 1048576 bytes"));
+}
+
+TEST_CASE("a line of exactly kMaxLineBytes is read, from memory and from a stream", "[io]") {
+  for (const std::size_t bytes : {kMaxLineBytes, kMaxLineBytes + 1}) {
+    const std::string text = "0 0\n" + padded_line(bytes) + "\n3 4";
+    std::istringstream in(text);
+    INFO(bytes);
+    if (bytes <= kMaxLineBytes) {
+      for (const PointSet& ps : {parse_points(text, "t", false), read_points(in, "t", false)}) {
+        REQUIRE(ps.p2.size() == 3);
+        CHECK(ps.p2[1] == Point2{1, 2});
+        CHECK(ps.p2[2] == Point2{3, 4});
+      }
+    } else {
+      CHECK_THROWS_WITH(parse_points(text, "t", false), Catch::StartsWith("t:2: line longer than"));
+      CHECK_THROWS_WITH(read_points(in, "t", false), Catch::StartsWith("t:2: line longer than"));
+    }
+  }
+}
+
+TEST_CASE("reading a stream in chunks gives what parsing the text gives", "[io]") {
+  rc::prop("lines across chunk boundaries", [] {
+    // Lines of random length (some far longer than a point) so that they
+    // straddle the reader's 64 KiB chunks at every offset.
+    const int n = *rc::gen::inRange(1, 400);
+    std::string text;
+    for (int i = 0; i < n; ++i) {
+      text += format_hex(random_double()) + std::string(*rc::gen::inRange(1, 3000), ' ') +
+              format_decimal(random_double());
+      if (*rc::gen::arbitrary<bool>()) text += " # " + std::string(*rc::gen::inRange(0, 500), 'c');
+      if (i + 1 < n || *rc::gen::arbitrary<bool>()) text += *rc::gen::arbitrary<bool>() ? "\r\n" : "\n";
+    }
+    std::istringstream in(text);
+    const PointSet a = parse_points(text, "t", false), b = read_points(in, "t", false);
+    RC_ASSERT(a.p2.size() == static_cast<std::size_t>(n));
+    RC_ASSERT(b.p2.size() == a.p2.size());
+    for (std::size_t i = 0; i < a.p2.size(); ++i)
+      for (int j = 0; j < 2; ++j) RC_ASSERT(same_bits(a.p2[i][j], b.p2[i][j]));
+  });
 }
 
 TEST_CASE("unreadable files are reported with their name", "[io]") {
