@@ -18,6 +18,7 @@
 //   incircle   = sum of 3 lift*minor            < 3 2^(4B+2) < 2^(4B+4)
 //   orient3d   = sum of 3 d*minor (a 3x3 minor) < 3 2^(3B+1) < 2^(3B+3)
 //   insphere   = sum of 4 lift*(3x3 minor)      < 4 2^(2B+2) 2^(3B+3) = 2^(5B+7)
+//   coplanar in-circle (below) = sum of 3 (3D lift)*minor < 3 2^(2B+2) 2^(2B+1) < 2^(4B+5)
 // Each stage is computed in IntFor<bound> (predicates/wide_int.hpp), the
 // narrowest of int64 / __int128 / WideInt<N> holding it; static_asserts below
 // restate each bound against its type's capacity.
@@ -60,12 +61,14 @@ struct Budget {
   using Minor3 = IntFor<3 * B + 3>;   // 3x3 minors, orient3d
   using InCircle = IntFor<4 * B + 4>;
   using InSphere = IntFor<5 * B + 7>;
+  using CoplanarInCircle = IntFor<4 * B + 5>;
   static_assert(value_bits<std::int64_t> >= B);  // index differences
   static_assert(value_bits<Minor2> >= 2 * B + 1);
   static_assert(value_bits<Lift3> >= 2 * B + 2);
   static_assert(value_bits<Minor3> >= 3 * B + 3);
   static_assert(value_bits<InCircle> >= 4 * B + 4);
   static_assert(value_bits<InSphere> >= 5 * B + 7);
+  static_assert(value_bits<CoplanarInCircle> >= 4 * B + 5);
 };
 
 template <class T>
@@ -144,6 +147,50 @@ typename Budget<B>::InSphere insphere(const I3& a, const I3& b, const I3& c, con
          (mul_in<W>(lift[1], cda) - mul_in<W>(lift[0], bcd));
 }
 
+// The two coordinates kept by the projection that drops `axis` (2: x, y;
+// 0: y, z; 1: x, z -- perturbed<K>'s coplanar_orientation order).
+inline std::array<int, 2> kept(int axis) {
+  return axis == 2 ? std::array<int, 2>{0, 1} : (axis == 0 ? std::array<int, 2>{1, 2}
+                                                          : std::array<int, 2>{0, 2});
+}
+
+template <int B>
+typename Budget<B>::Minor2 projected_orient2d(const I3& a, const I3& b, const I3& c, int axis) {
+  const auto [i, j] = kept(axis);
+  return orient2d<B>({a[i], a[j]}, {b[i], b[j]}, {c[i], c[j]});
+}
+
+// For a, b, c, p in one plane whose projection dropping `axis` is
+// non-degenerate: the in-circle determinant of the projections (a' - p', ...)
+// with the 3D squared distances |a - p|^2, ... as lifts. On the plane the
+// dropped coordinate is an affine function of the kept ones, so x -> |x - p|^2
+// is a positive definite quadratic form q of x' - p', and the circle abc is
+// the plane section {q = L} of the lifted surface, L affine (Guibas & Stolfi,
+// ACM TOG 4 (1985), the lifting argument for in-circle, with q for the
+// paraboloid). Hence the sign is positive iff p is inside the circle abc when
+// a', b', c' are counterclockwise.
+template <int B>
+typename Budget<B>::CoplanarInCircle coplanar_incircle(const I3& a, const I3& b, const I3& c,
+                                                       const I3& p, int axis) {
+  using T = typename Budget<B>::Minor2;
+  using L = typename Budget<B>::Lift3;
+  using W = typename Budget<B>::CoplanarInCircle;
+  const auto [i, j] = kept(axis);
+  const I3* q[3] = {&a, &b, &c};
+  std::int64_t u[3], v[3];
+  L lift[3];
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t dx = (*q[k])[0] - p[0], dy = (*q[k])[1] - p[1], dz = (*q[k])[2] - p[2];
+    u[k] = (*q[k])[i] - p[i];
+    v[k] = (*q[k])[j] - p[j];
+    lift[k] = mul_in<L>(dx, dx) + mul_in<L>(dy, dy) + mul_in<L>(dz, dz);
+  }
+  const T bc = minor2<T>(u[1], v[1], u[2], v[2]);
+  const T ca = minor2<T>(u[2], v[2], u[0], v[0]);
+  const T ab = minor2<T>(u[0], v[0], u[1], v[1]);
+  return mul_in<W>(lift[0], bc) + mul_in<W>(lift[1], ca) + mul_in<W>(lift[2], ab);
+}
+
 template <class T>
 Sign sign(const T& v) {
   return static_cast<Sign>(sign_int(v));
@@ -216,6 +263,21 @@ class BasicIntegerKernel {
                 const Point3& e) const {
     return intdet::sign(intdet::insphere<B3>(g3_.index(a), g3_.index(b), g3_.index(c),
                                              g3_.index(d), g3_.index(e)));
+  }
+
+  // Coplanar predicates on the 3D grid, which perturbed<K> uses instead of its
+  // generic ones (predicates/perturbed.hpp): those ask orient2d about the
+  // projections, which this kernel would answer on its 2D grid, and insphere
+  // about a point made off the plane, which the 3D box may not hold (points of
+  // the plane z = c get a box of height 0; snapping clamps to it).
+  Sign projected_orient2d(const Point3& p, const Point3& q, const Point3& r, int axis) const {
+    return intdet::sign(
+        intdet::projected_orient2d<B3>(g3_.index(p), g3_.index(q), g3_.index(r), axis));
+  }
+  Sign coplanar_incircle_lifted(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& p, int axis) const {
+    return intdet::sign(intdet::coplanar_incircle<B3>(g3_.index(a), g3_.index(b), g3_.index(c),
+                                                      g3_.index(p), axis));
   }
 
  private:

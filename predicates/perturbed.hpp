@@ -34,7 +34,11 @@
 // Exact part: any sphere through a, b, c meets their plane in their circle, so
 // with s = a moved along a coordinate axis not parallel to the plane (s is a
 // double, off the plane), p is inside the circle iff it is inside sphere abcs:
-// sign = insphere(a, b, c, s, p) * orient3d(a, b, c, s). On zero, the 2D walk
+// sign = insphere(a, b, c, s, p) * orient3d(a, b, c, s), both exact (for K =
+// adaptive the small-integer path answers with its exact sign here, not its
+// perturbed one). A kernel that cannot represent s (integer: its box may be
+// flat) provides projected_orient2d and coplanar_incircle_lifted, used instead
+// of orient2d on the projections and of s. On zero, the 2D walk
 // in the plane (coplanar_orientation as the plane's orientation), normalised by
 // local = coplanar_orientation(a, b, c), over the three largest points; if
 // nothing decides (impossible for distinct points) -local, as CGAL 5.5 does.
@@ -212,6 +216,7 @@ struct perturbed {
   {
     const auto [o, axis] = coplanar_orientation_axis(a, b, c);
     if (o == Sign::zero) return Sign::zero;  // a, b, c collinear: precondition violated
+    if constexpr (projecting) return base.coplanar_incircle_lifted(a, b, c, p, axis) * o;
     // The projection along `axis` is non-degenerate, so the plane's normal has a
     // non-zero component on `axis` and s = a + t e_axis (t != 0) is off the plane.
     const Point3 s = off_plane(a, b, c, p, axis);
@@ -306,6 +311,11 @@ struct perturbed {
   // Kernels exact for every double input, for which the small-integer
   // evaluation may answer in K's place (see the top of this file).
   static constexpr bool lattice = std::is_same_v<K, AdaptiveKernel>;
+  // Kernels with their own coplanar predicates (integer: see integer_kernel.hpp).
+  static constexpr bool projecting = requires(const K& k, const Point3& p) {
+    { k.projected_orient2d(p, p, p, 0) } -> std::same_as<Sign>;
+    { k.coplanar_incircle_lifted(p, p, p, p, 0) } -> std::same_as<Sign>;
+  };
 
   // When K's first stage cannot decide: the small-integer evaluation, then K's
   // remaining stages. Out of line, so that the inline path stays K's first stage
@@ -344,6 +354,15 @@ struct perturbed {
     }
     return K::insphere_rest(a, b, c, d, e);
   }
+  [[gnu::noinline]] static Staged insphere_lattice_exact(const Point3& a, const Point3& b,
+                                                         const Point3& c, const Point3& d,
+                                                         const Point3& e) {
+    if (small_integer::is_int(e[0])) {
+      const small_integer::Answer r = small_integer::insphere(a, b, c, d, e);
+      if (r.known) return {r.sign, 0};
+    }
+    return K::insphere_rest(a, b, c, d, e);
+  }
   static Staged sos_staged(const small_integer::SosAnswer& r) {
     return {r.sign, static_cast<unsigned char>(r.by_perturbation ? perturbation_stage : 0)};
   }
@@ -361,11 +380,13 @@ struct perturbed {
                                       [](const auto&... p) { return orient3d_lattice(p...); });
     return dlab::orient3d_staged(base, a, b, c, d);
   }
+  // The exact in-sphere sign (zero included): small_integer::insphere, not
+  // insphere_sos, whose answer on a zero is already the perturbed one.
   Staged insphere_base(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                        const Point3& e) const {
     if constexpr (lattice)
       return base.insphere_first_then(a, b, c, d, e,
-                                  [](const auto&... p) { return insphere_lattice(p...); });
+                                  [](const auto&... p) { return insphere_lattice_exact(p...); });
     return dlab::insphere_staged(base, a, b, c, d, e);
   }
 
@@ -373,6 +394,11 @@ struct perturbed {
   // xz drops y (1).
   std::pair<Sign, int> coplanar_orientation_axis(const Point3& p, const Point3& q,
                                                  const Point3& r) const {
+    if constexpr (projecting) {
+      for (const int axis : {2, 0, 1})
+        if (const Sign o = base.projected_orient2d(p, q, r, axis); o != Sign::zero) return {o, axis};
+      return {Sign::zero, 1};
+    }
     Sign o = orient2d_base({p[0], p[1]}, {q[0], q[1]}, {r[0], r[1]}).sign;
     if (o != Sign::zero) return {o, 2};
     o = orient2d_base({p[1], p[2]}, {q[1], q[2]}, {r[1], r[2]}).sign;

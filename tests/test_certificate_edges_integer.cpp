@@ -1,0 +1,598 @@
+// Issue 17, "every certificate is tested at its edges", for the integer-valued
+// certificates. RapidCheck drives the inputs to the edges of each one and
+// compares with MpKernel / perturbed<MpKernel> / exact rationals:
+//  - small-integer evaluation (predicates/small_integer.hpp) and its SoS keys:
+//    reference coordinates at every binade edge from 2^-1074 to 2^1023, both
+//    signs, moved by m 2^-k and by ulps, at +-2^52, +-2^51, +-2^53 and their
+//    neighbours; differences at B - 1, B, B + 1 (and B +- 2^-k) for each
+//    predicate's bound. A certified answer must be mp's; the certified domain
+//    is exactly the documented one (every integer case with |x| <= 2^52 and
+//    differences <= B is certified; nothing else is, bar integers beyond 2^52);
+//  - the integer kernel's bit budgets (integer_kernel.hpp, wide_int.hpp): the
+//    exact determinants at the corners of the index box for the B where a
+//    budget's type changes width, and fitted kernels (integer_grid.hpp) on
+//    binade-edge boxes, against mp on the snapped points;
+//  - perturbed<K>::coplanar_incircle_exact for K = adaptive (small-integer path
+//    included), integer and mp, against the circumcircle in exact rationals.
+#include <algorithm>
+#include <array>
+#include <boost/multiprecision/gmp.hpp>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <rapidcheck.h>
+#include <rapidcheck/catch.h>
+#include <span>
+#include <vector>
+
+#include "predicates/adaptive_kernel.hpp"
+#include "predicates/integer_kernel.hpp"
+#include "predicates/mp_kernel.hpp"
+#include "predicates/perturbed.hpp"
+#include "predicates/small_integer.hpp"
+
+using namespace dlab;
+
+namespace {
+
+const MpKernel mp;
+const perturbed<MpKernel> pmp;
+const perturbed<AdaptiveKernel> pad;
+
+// The bounds small_integer.hpp documents, written out here so that a changed
+// constant is seen even where it would still be exact.
+constexpr double documented_o2 = 0x1p25, documented_ic = 0x1p12, documented_o3 = 0x1p16,
+                 documented_is = 0x1p9, documented_reference = 0x1p52;
+
+bool integral(double x) { return std::isfinite(x) && std::trunc(x) == x; }
+
+// A binade edge s 2^e (e from -1074 to 1023), moved by m 2^-k, by m 2^(e-k)
+// (k = 0..4, |m| <= 3), by up to two ulps, or not at all.
+double binade_edge() {
+  const int e = *rc::gen::inRange(-1074, 1024);
+  const double x = std::ldexp(*rc::gen::arbitrary<bool>() ? -1.0 : 1.0, e);
+  const int m = *rc::gen::inRange(-3, 4), k = *rc::gen::inRange(0, 5);
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0: return x + std::ldexp(m, -k);
+    case 1: return x + std::ldexp(m, std::max(e - k, -1074));
+    case 2: {
+      double y = x;
+      for (int i = 0; i < std::abs(m) % 3; ++i) y = std::nextafter(y, m < 0 ? 0.0 : 2 * y);
+      return y;
+    }
+    default: return x;
+  }
+}
+
+// Reference coordinates: binade edges, the edges of the certificate itself
+// (2^52: the reference bound and is_int's shift; 2^51: where spacing becomes
+// 1/2; 2^53: where it becomes 2), the issue-17 witness, small integers.
+double reference_coordinate() {
+  static const std::vector<double> special{
+      0x1p52, 0x1p52 + 1, 0x1p52 + 2, 0x1p52 - 0.5, 0x1p52 - 1, 0x1p52 - 1.5,
+      0x1p51, 0x1p51 + 0.5, 0x1p51 - 0.5, 0x1p51 + 1, 0x1p51 + 8, 0x1p51 + 7.5,
+      0x1p53, 0x1p53 - 1, 0x1p53 + 2, 0x1p53 + 4, 0, 1, 0.5};
+  switch (*rc::gen::inRange(0, 3)) {
+    case 0: return (*rc::gen::arbitrary<bool>() ? -1 : 1) * *rc::gen::elementOf(special);
+    case 1: return binade_edge();
+    default: return *rc::gen::inRange(-100, 101);
+  }
+}
+
+// A coordinate difference for bound B. Modes: the edge (0, 1, B/2, B - 1, B,
+// B + 1, moved by m 2^-k), the lattices {0, B} and {0, B/2, B} (exactly
+// cocircular / cospherical sets: the SoS walk), any integer in [-B-1, B+1].
+double difference(double B, int mode) {
+  const double s = *rc::gen::arbitrary<bool>() ? -1 : 1;
+  switch (mode) {
+    case 0: {
+      double d = *rc::gen::elementOf(std::vector<double>{0, 1, B / 2, B - 1, B, B + 1});
+      if (*rc::gen::inRange(0, 4) == 0) d += std::ldexp(*rc::gen::inRange(-2, 3), -*rc::gen::inRange(0, 5));
+      return s * d;
+    }
+    case 1: return s * B * *rc::gen::inRange(0, 2);
+    case 2: return s * B / 2 * *rc::gen::inRange(0, 3);
+    default: return *rc::gen::inRange(-static_cast<int>(B) - 1, static_cast<int>(B) + 2);
+  }
+}
+
+// N points of dimension D, the last one the reference; the others are the
+// reference plus differences (rounded like any input).
+template <int D, int N>
+std::array<Point<D>, N> edge_call(double B) {
+  std::array<Point<D>, N> p;
+  const bool shared = *rc::gen::arbitrary<bool>();  // one value on every axis
+  const double r0 = reference_coordinate();
+  for (int j = 0; j < D; ++j) p[N - 1][j] = shared ? r0 : reference_coordinate();
+  const int mode = *rc::gen::inRange(0, 4);
+  for (int i = 0; i + 1 < N; ++i)
+    for (int j = 0; j < D; ++j) p[i][j] = p[N - 1][j] + difference(B, mode);
+  return p;
+}
+
+// The documented certified domain, decided independently of the code:
+// `strict`: every coordinate an integer of magnitude <= 2^52 and every
+// difference to the reference at most B (there the certificate must answer);
+// `loose`: the same with integers of any magnitude besides the reference (the
+// certificate may refuse those; it must refuse everything outside).
+template <int D, int N>
+std::pair<bool, bool> domain(const std::array<Point<D>, N>& p, double B) {
+  bool loose = true, strict = true;
+  for (int j = 0; j < D; ++j) {
+    const double r = p[N - 1][j];
+    loose = loose && integral(r) && std::fabs(r) <= documented_reference;
+    for (int i = 0; i + 1 < N; ++i) {
+      const double x = p[i][j];
+      if (!integral(x)) {
+        loose = false;
+        continue;
+      }
+      strict = strict && std::fabs(x) <= documented_reference;
+      // Both integers and |r| <= 2^52 (else loose is false already): x - r is
+      // exact whenever it is <= B, and large when it is not.
+      loose = loose && std::fabs(x - r) <= B;
+    }
+  }
+  return {loose, loose && strict};
+}
+
+struct Tally {
+  int calls = 0, certified = 0, strict = 0, zeros = 0, walked = 0;
+};
+
+// Certificate (1) on every coordinate of a call, and the scalar and SSE2
+// evaluations of all_int on the call itself.
+template <int D, int N>
+void check_all_int(const std::array<Point<D>, N>& p) {
+  for (const auto& q : p)
+    for (double x : q) {
+      if (small_integer::is_int(x)) RC_ASSERT(!std::isfinite(x) || integral(x));
+      if (integral(x) && std::fabs(x) <= 0x1p52) RC_ASSERT(small_integer::is_int(x));
+    }
+  const Point<D>* pts[N];
+  for (int i = 0; i < N; ++i) pts[i] = &p[i];
+  const bool scalar = small_integer::all_int_scalar<D, N>(pts);
+#if defined(__SSE2__)
+  RC_ASSERT((small_integer::all_int_sse2<D, N>(pts) == scalar));
+#endif
+  bool expected = true;
+  for (const auto& q : p)
+    for (double x : q) expected = expected && small_integer::is_int(x);
+  for (double x : p[N - 1]) expected = expected && std::fabs(x) <= documented_reference;
+  RC_ASSERT(scalar == expected);
+}
+
+template <class Answer>
+void tally(Tally& t, const Answer& r, bool strict) {
+  ++t.calls;
+  t.certified += r.known;
+  t.strict += strict;
+  t.zeros += r.known && r.sign == Sign::zero;
+}
+
+}  // namespace
+
+namespace {
+
+// The properties reach the certified domain, its zeros and the walk. (One
+// rc::prop per test case: each is a Catch section, run in its own pass.)
+void check_reach(const Tally& t) {
+  INFO("calls " << t.calls << ", certified " << t.certified << ", strict " << t.strict
+                << ", zeros " << t.zeros << ", walked " << t.walked);
+  CHECK(t.certified >= t.calls / 10);
+  CHECK(t.strict >= t.calls / 20);
+  CHECK(t.zeros > 0);
+}
+
+}  // namespace
+
+TEST_CASE("small_integer 2D at the edges of its certificate agrees with mp",
+          "[certificate][small_integer][rc]") {
+  Tally o2, ic;
+  rc::prop("orient2d, incircle and incircle_sos", [&] {
+    for (int batch = 0; batch < 40; ++batch) {
+      const auto p = edge_call<2, 3>(documented_o2);
+      check_all_int<2, 3>(p);
+      const auto [loose, strict] = domain<2, 3>(p, documented_o2);
+      const auto r = small_integer::orient2d(p[0], p[1], p[2]);
+      const Sign exact = mp.orient2d(p[0], p[1], p[2]);
+      if (r.known) RC_ASSERT(r.sign == exact);
+      if (r.known) RC_ASSERT(loose);
+      if (strict) RC_ASSERT(r.known);
+      RC_ASSERT(pad.orient2d(p[0], p[1], p[2]) == exact);
+      tally(o2, r, strict);
+  
+      const auto q = edge_call<2, 4>(documented_ic);
+      check_all_int<2, 4>(q);
+      const auto [qloose, qstrict] = domain<2, 4>(q, documented_ic);
+      const auto c = small_integer::incircle(q[0], q[1], q[2], q[3]);
+      const auto s = small_integer::incircle_sos(q[0], q[1], q[2], q[3]);
+      const Sign qexact = mp.incircle(q[0], q[1], q[2], q[3]);
+      const Sign perturbed_sign = pmp.incircle(q[0], q[1], q[2], q[3]);
+      RC_ASSERT(c.known == s.known);
+      if (c.known) RC_ASSERT(c.sign == qexact);
+      if (s.known) {
+        RC_ASSERT(s.sign == perturbed_sign);
+        RC_ASSERT(s.by_perturbation == (qexact == Sign::zero));
+      }
+      if (c.known) RC_ASSERT(qloose);
+      if (qstrict) RC_ASSERT(c.known);
+      RC_ASSERT(pad.incircle(q[0], q[1], q[2], q[3]) == perturbed_sign);
+      tally(ic, c, qstrict);
+      ic.walked += s.known && s.by_perturbation;
+    }
+  });
+  check_reach(o2);
+  check_reach(ic);
+  CHECK(ic.walked > 0);
+}
+
+TEST_CASE("small_integer 3D at the edges of its certificate agrees with mp",
+          "[certificate][small_integer][rc]") {
+  Tally o3, is;
+  rc::prop("orient3d, insphere and insphere_sos", [&] {
+    for (int batch = 0; batch < 40; ++batch) {
+      const auto p = edge_call<3, 4>(documented_o3);
+      check_all_int<3, 4>(p);
+      const auto [loose, strict] = domain<3, 4>(p, documented_o3);
+      const auto r = small_integer::orient3d(p[0], p[1], p[2], p[3]);
+      const Sign exact = mp.orient3d(p[0], p[1], p[2], p[3]);
+      if (r.known) RC_ASSERT(r.sign == exact);
+      if (r.known) RC_ASSERT(loose);
+      if (strict) RC_ASSERT(r.known);
+      RC_ASSERT(pad.orient3d(p[0], p[1], p[2], p[3]) == exact);
+      tally(o3, r, strict);
+  
+      const auto q = edge_call<3, 5>(documented_is);
+      check_all_int<3, 5>(q);
+      const auto [qloose, qstrict] = domain<3, 5>(q, documented_is);
+      const auto c = small_integer::insphere(q[0], q[1], q[2], q[3], q[4]);
+      const auto s = small_integer::insphere_sos(q[0], q[1], q[2], q[3], q[4]);
+      const Sign qexact = mp.insphere(q[0], q[1], q[2], q[3], q[4]);
+      const Sign perturbed_sign = pmp.insphere(q[0], q[1], q[2], q[3], q[4]);
+      RC_ASSERT(c.known == s.known);
+      if (c.known) RC_ASSERT(c.sign == qexact);
+      if (s.known) {
+        RC_ASSERT(s.sign == perturbed_sign);
+        RC_ASSERT(s.by_perturbation == (qexact == Sign::zero));
+      }
+      if (c.known) RC_ASSERT(qloose);
+      if (qstrict) RC_ASSERT(c.known);
+      RC_ASSERT(pad.insphere(q[0], q[1], q[2], q[3], q[4]) == perturbed_sign);
+      tally(is, c, qstrict);
+      is.walked += s.known && s.by_perturbation;
+    }
+  });
+  check_reach(o3);
+  check_reach(is);
+  CHECK(is.walked > 0);
+}
+
+namespace {
+
+// Differences at B - 1, B, B + 1 on every axis of every point at once (the
+// largest products and sums of the budget), signs chosen per entry, with the
+// reference at +-2^52, +-2^51 or a binade edge. Returns the number certified.
+template <int D, int N, class Small, class Exact>
+int budget_corners(double B, Small&& small, Exact&& exact) {
+  int certified = 0;
+  for (int t = 0; t < 64; ++t) {
+    std::array<Point<D>, N> p;
+    const double r = *rc::gen::elementOf(std::vector<double>{0x1p52, -0x1p52, 0x1p51, -0x1p51,
+                                                               0x1p52 - 0x1p26, 0, 7});
+    p[N - 1].fill(r);
+    const double m = B + *rc::gen::inRange(-1, 2);
+    for (int i = 0; i + 1 < N; ++i)
+      for (int j = 0; j < D; ++j) p[i][j] = r + (*rc::gen::arbitrary<bool>() ? m : -m);
+    const auto ans = small(p);
+    if (ans.known) RC_ASSERT(ans.sign == exact(p));
+    const bool fits = m <= B && std::fabs(r) + m <= 0x1p52;
+    RC_ASSERT(ans.known == fits || (!fits && std::fabs(r) + m > 0x1p52 && m <= B));
+    certified += ans.known;
+  }
+  return certified;
+}
+
+}  // namespace
+
+TEST_CASE("small_integer: every difference at B - 1, B, B + 1 at once", "[certificate][small_integer][rc]") {
+  int certified = 0;
+  rc::prop("all four predicates at their budget's corners", [&] {
+    certified += budget_corners<2, 3>(
+        documented_o2, [](const auto& p) { return small_integer::orient2d(p[0], p[1], p[2]); },
+        [](const auto& p) { return mp.orient2d(p[0], p[1], p[2]); });
+    certified += budget_corners<2, 4>(
+        documented_ic, [](const auto& p) { return small_integer::incircle(p[0], p[1], p[2], p[3]); },
+        [](const auto& p) { return mp.incircle(p[0], p[1], p[2], p[3]); });
+    certified += budget_corners<3, 4>(
+        documented_o3, [](const auto& p) { return small_integer::orient3d(p[0], p[1], p[2], p[3]); },
+        [](const auto& p) { return mp.orient3d(p[0], p[1], p[2], p[3]); });
+    certified += budget_corners<3, 5>(
+        documented_is,
+        [](const auto& p) { return small_integer::insphere(p[0], p[1], p[2], p[3], p[4]); },
+        [](const auto& p) { return mp.insphere(p[0], p[1], p[2], p[3], p[4]); });
+  });
+  CHECK(certified > 1000);
+}
+
+// ---- The integer kernel's bit budgets ----
+
+namespace {
+
+// Index values biased to the box's corners: lo, lo + 1, the middle, hi - 1, hi
+// (hi = lo + 2^B - 1), or anywhere in the box.
+template <int B>
+std::int64_t box_index(std::int64_t lo) {
+  const std::int64_t span = (std::int64_t{1} << B) - 1;
+  switch (*rc::gen::inRange(0, 6)) {
+    case 0: return lo;
+    case 1: return lo + 1;
+    case 2: return lo + span / 2;
+    case 3: return lo + span - 1;
+    case 4: return lo + span;
+    default: return lo + *rc::gen::inRange<std::int64_t>(0, span + 1);
+  }
+}
+
+template <int B, int D>
+std::array<std::int64_t, D> box_point(const std::array<std::int64_t, D>& lo) {
+  std::array<std::int64_t, D> p;
+  for (int j = 0; j < D; ++j) p[j] = box_index<B>(lo[j]);
+  return p;
+}
+
+template <std::size_t D>
+std::array<double, D> as_point(const std::array<std::int64_t, D>& i) {
+  std::array<double, D> p;
+  for (std::size_t j = 0; j < D; ++j) p[j] = static_cast<double>(i[j]);  // exact: |i| < 2^53
+  return p;
+}
+
+// intdet at width B against mp on the same integers (B <= 52: they are doubles).
+template <int B>
+void intdet_at_corners() {
+  static_assert(B <= 52);
+  const std::int64_t half = std::int64_t{1} << (B - 1);
+  const std::int64_t lo = *rc::gen::elementOf(std::vector<std::int64_t>{0, -half, -2 * half + 1});
+  const intdet::I2 a2 = box_point<B, 2>({lo, lo}), b2 = box_point<B, 2>({lo, lo}),
+                   c2 = box_point<B, 2>({lo, lo}), d2 = box_point<B, 2>({lo, lo});
+  RC_ASSERT(intdet::sign(intdet::orient2d<B>(a2, b2, c2)) ==
+            mp.orient2d(as_point(a2), as_point(b2), as_point(c2)));
+  RC_ASSERT(intdet::sign(intdet::incircle<B>(a2, b2, c2, d2)) ==
+            mp.incircle(as_point(a2), as_point(b2), as_point(c2), as_point(d2)));
+  const intdet::I3 l3{lo, lo, lo};
+  const intdet::I3 a = box_point<B, 3>(l3), b = box_point<B, 3>(l3), c = box_point<B, 3>(l3),
+                   d = box_point<B, 3>(l3), e = box_point<B, 3>(l3);
+  const Point3 pa = as_point(a), pb = as_point(b), pc = as_point(c), pd = as_point(d),
+               pe = as_point(e);
+  RC_ASSERT(intdet::sign(intdet::orient3d<B>(a, b, c, d)) == mp.orient3d(pa, pb, pc, pd));
+  RC_ASSERT(intdet::sign(intdet::insphere<B>(a, b, c, d, e)) == mp.insphere(pa, pb, pc, pd, pe));
+  // The coplanar in-circle determinant on the plane z = a_z (dropping z it is
+  // the 2D in-circle: the lifts' z terms vanish).
+  const intdet::I3 fa{a[0], a[1], a[2]}, fb{b[0], b[1], a[2]}, fc{c[0], c[1], a[2]},
+      fp{d[0], d[1], a[2]};
+  auto xy = [](const intdet::I3& i) { return Point2{double(i[0]), double(i[1])}; };
+  RC_ASSERT(intdet::sign(intdet::coplanar_incircle<B>(fa, fb, fc, fp, 2)) ==
+            mp.incircle(xy(fa), xy(fb), xy(fc), xy(fp)));
+}
+
+}  // namespace
+
+TEST_CASE("integer determinants at the box corners where a budget's type changes width",
+          "[certificate][integer][rc]") {
+  // A budget of f(B) bits is held by the narrowest of int64 / int128 / WideInt
+  // (capacities 63, 127, 191, ...); the type is one width narrower at f(B) - 1
+  // bits exactly where f(B) - 1 is a capacity: 2B + 2 at B = 31 (3D lifts),
+  // 4B + 4 at B = 15, 31, 47 (incircle), 5B + 7 at B = 37 (insphere). There,
+  // and at the kernels' own B = 24, 30 (B = 62 and 55: tests/test_integer_kernel.cpp).
+  rc::prop("B = 15, 24, 30, 31, 37, 47 against mp", [] {
+    intdet_at_corners<15>();
+    intdet_at_corners<24>();
+    intdet_at_corners<30>();
+    intdet_at_corners<31>();
+    intdet_at_corners<37>();
+    intdet_at_corners<47>();
+  });
+}
+
+namespace {
+
+// Points at the corners of a box whose sides are binade edges (and a few ulps
+// inside), the grid fitted to them, the predicates against mp on the snapped
+// points; perturbed<K> against perturbed<mp>.
+template <class K>
+void fitted_kernel_at_edges() {
+  constexpr int n = 8;
+  std::vector<Point3> p3(n);
+  std::vector<Point2> p2(n);
+  double lo[3], hi[3];
+  for (int j = 0; j < 3; ++j) {
+    lo[j] = binade_edge();
+    hi[j] = *rc::gen::arbitrary<bool>() ? binade_edge() : -lo[j];
+    if (hi[j] < lo[j]) std::swap(lo[j], hi[j]);
+  }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int c = *rc::gen::inRange(0, 4);
+      double x = c == 0 ? lo[j] : (c == 1 ? hi[j] : (c == 2 ? lo[j] / 2 + hi[j] / 2 : lo[j]));
+      if (c == 3) x = std::nextafter(hi[j], lo[j]);
+      p3[i][j] = x;
+      if (j < 2) p2[i][j] = x;
+    }
+  perturbed<K> k3, k2;
+  k3.snap_all(p3);
+  k2.snap_all(p2);
+  for (int t = 0; t < 12; ++t) {
+    const auto i = *rc::gen::container<std::array<int, 5>>(rc::gen::inRange(0, n));
+    const Point3 &a = p3[i[0]], &b = p3[i[1]], &c = p3[i[2]], &d = p3[i[3]], &e = p3[i[4]];
+    RC_ASSERT(k3.orient3d(a, b, c, d) == mp.orient3d(a, b, c, d));
+    RC_ASSERT(k3.base.insphere(a, b, c, d, e) == mp.insphere(a, b, c, d, e));
+    RC_ASSERT(k3.insphere(a, b, c, d, e) == pmp.insphere(a, b, c, d, e));
+    const Point2 &u = p2[i[0]], &v = p2[i[1]], &w = p2[i[2]], &z = p2[i[3]];
+    RC_ASSERT(k2.orient2d(u, v, w) == mp.orient2d(u, v, w));
+    RC_ASSERT(k2.base.incircle(u, v, w, z) == mp.incircle(u, v, w, z));
+    RC_ASSERT(k2.incircle(u, v, w, z) == pmp.incircle(u, v, w, z));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("fitted integer kernels on binade-edge boxes agree with mp on the snapped points",
+          "[certificate][integer][rc]") {
+  rc::prop("B = 62 (IntegerKernel)", [] { fitted_kernel_at_edges<IntegerKernel>(); });
+  rc::prop("B = 30 / 24 (IntegerKernel128)", [] { fitted_kernel_at_edges<IntegerKernel128>(); });
+  rc::prop("B = 31 (3D lifts at a width edge)", [] {
+    fitted_kernel_at_edges<BasicIntegerKernel<31, 31>>();
+  });
+}
+
+// ---- perturbed<K>::coplanar_incircle_exact ----
+
+namespace {
+
+using Q = boost::multiprecision::mpq_rational;
+
+// Unoriented in-circle from the definition: the circumcentre o of a, b, c in
+// exact rationals (o - a = (|u|^2 v x w + |v|^2 w x u) / (2 |w|^2), u = b - a,
+// v = c - a, w = u x v), then sign(|a - o|^2 - |p - o|^2): positive inside.
+Sign circumcircle_side(const Point3& a, const Point3& b, const Point3& c, const Point3& p) {
+  using V = std::array<Q, 3>;
+  auto sub = [](const Point3& x, const Point3& y) {
+    return V{Q(x[0]) - Q(y[0]), Q(x[1]) - Q(y[1]), Q(x[2]) - Q(y[2])};
+  };
+  auto cross = [](const V& x, const V& y) {
+    return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  auto dot = [](const V& x, const V& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  const V u = sub(b, a), v = sub(c, a), w = cross(u, v);
+  const Q ww = dot(w, w);
+  RC_ASSERT(ww != 0);  // a, b, c not collinear
+  const V vw = cross(v, w), wu = cross(w, u);
+  V o;  // relative to a
+  for (int i = 0; i < 3; ++i) o[i] = (dot(u, u) * vw[i] + dot(v, v) * wu[i]) / (2 * ww);
+  V po = sub(p, a);
+  for (int i = 0; i < 3; ++i) po[i] -= o[i];
+  const Q diff = dot(o, o) - dot(po, po);
+  return diff > 0 ? Sign::positive : (diff < 0 ? Sign::negative : Sign::zero);
+}
+
+// Integer similarities of the plane into 3D, (u, v) -> u e1 + v e2 with
+// e1 . e2 = 0, |e1| = |e2|: axis-parallel planes (where the integer kernel's
+// box is flat) and tilted ones.
+const std::vector<std::array<Point3, 2>> planes{
+    {{{1, 0, 0}, {0, 1, 0}}}, {{{0, 1, 0}, {0, 0, 1}}}, {{{0, 0, 1}, {1, 0, 0}}},
+    {{{1, 2, 2}, {2, 1, -2}}}, {{{2, 3, 6}, {3, -6, 2}}}, {{{3, 4, 0}, {0, 0, 5}}},
+    {{{0, 3, 4}, {0, 4, -3}}}};
+
+// Lattice points on x^2 + y^2 = 5^2, 5^4, 65^2 and points off those circles.
+Point2 circle_point(int r) {
+  static const std::vector<std::array<int, 2>> base{{5, 0}, {3, 4}, {4, 3}};
+  static const std::vector<std::array<int, 2>> base25{{25, 0}, {15, 20}, {20, 15}, {7, 24}, {24, 7}};
+  static const std::vector<std::array<int, 2>> base65{{65, 0}, {16, 63}, {63, 16}, {25, 60},
+                                                      {60, 25}, {33, 56}, {56, 33}, {39, 52}, {52, 39}};
+  const auto& set = r == 0 ? base : (r == 1 ? base25 : base65);
+  auto q = *rc::gen::elementOf(set);
+  if (*rc::gen::arbitrary<bool>()) std::swap(q[0], q[1]);
+  return {double(*rc::gen::arbitrary<bool>() ? q[0] : -q[0]),
+          double(*rc::gen::arbitrary<bool>() ? q[1] : -q[1])};
+}
+
+bool collinear(const Point3& a, const Point3& b, const Point3& c) {
+  for (const auto& [i, j] : {std::array<int, 2>{0, 1}, {1, 2}, {0, 2}})
+    if (mp.orient2d({a[i], a[j]}, {b[i], b[j]}, {c[i], c[j]}) != Sign::zero) return false;
+  return true;
+}
+
+// The small-integer path where issue 17 found the defect: the in-sphere with
+// the off-plane point perturbed<K> builds (s = a moved along the first axis
+// whose projection is non-degenerate by the points' spread) is certified and
+// its exact value is zero, so insphere_sos answers with its perturbed sign.
+bool reaches_small_integer_walk(const std::array<Point3, 4>& q) {
+  int axis = 1;
+  for (const auto& [i, j, drop] : {std::array<int, 3>{0, 1, 2}, {1, 2, 0}, {0, 2, 1}})
+    if (mp.orient2d({q[0][i], q[0][j]}, {q[1][i], q[1][j]}, {q[2][i], q[2][j]}) != Sign::zero) {
+      axis = drop;
+      break;
+    }
+  double w = 0;
+  for (int k = 1; k < 4; ++k)
+    for (int i = 0; i < 3; ++i) w = std::fmax(w, std::fabs(q[k][i] - q[0][i]));
+  Point3 s = q[0];
+  s[axis] += w;
+  const auto r = small_integer::insphere_sos(q[0], q[1], q[2], s, q[3]);
+  return r.known && r.by_perturbation;
+}
+
+struct CoplanarTally {
+  int calls = 0, zeros = 0, small_integer_walk = 0;
+};
+
+template <class K>
+void check_coplanar(const perturbed<K>& k, const std::array<Point3, 4>& q) {
+  const Sign exact = circumcircle_side(q[0], q[1], q[2], q[3]);
+  RC_ASSERT(k.coplanar_incircle_exact(q[0], q[1], q[2], q[3]) == exact);
+  if (q[3] != q[0] && q[3] != q[1] && q[3] != q[2]) {
+    const Sign s = k.coplanar_incircle(q[0], q[1], q[2], q[3]);
+    RC_ASSERT(s == pmp.coplanar_incircle(q[0], q[1], q[2], q[3]));
+    if (exact != Sign::zero) RC_ASSERT(s == exact);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("coplanar_incircle_exact is exact for the adaptive, integer and mp kernels",
+          "[certificate][perturbed][rc]") {
+  CoplanarTally tally;
+  rc::prop("cocircular coplanar points, lattices and binade-edge scales", [&] {
+    for (int batch = 0; batch < 10; ++batch) {
+      const auto& f = *rc::gen::elementOf(planes);
+      const int r = *rc::gen::inRange(0, 3);
+      std::array<Point2, 4> q2;
+      for (auto& p : q2) p = circle_point(r);
+      if (*rc::gen::inRange(0, 3) == 0) q2[3] = {q2[3][0] + *rc::gen::inRange(-2, 3), q2[3][1]};
+      if (mp.orient2d(q2[0], q2[1], q2[2]) == Sign::zero) continue;  // a, b, c on a line
+      // Scale by 2^s (halves and sixteenths included), translate by +-2^40,
+      // +-2^51, +-2^52 or +-1024 where every sum stays exact.
+      const int s = *rc::gen::elementOf(std::vector<int>{0, 0, 0, -1, -4, 30, -1000, 900});
+      double shift = (*rc::gen::arbitrary<bool>() ? -1 : 1) *
+                     *rc::gen::elementOf(std::vector<double>{0, 0x1p51, 0x1p52, 0x1p40, 1024});
+      std::array<Point3, 4> q;
+      for (int pass = 0; pass < 2; ++pass) {  // no shift where a sum would round
+        bool exact = true;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const double x = std::ldexp(q2[i][0] * f[0][j] + q2[i][1] * f[1][j], s);
+            q[i][j] = x + shift;
+            exact = exact && q[i][j] - shift == x && q[i][j] - x == shift;
+          }
+        if (exact) break;
+        shift = 0;
+      }
+      RC_ASSERT(mp.orient3d(q[0], q[1], q[2], q[3]) == Sign::zero);  // the sums were exact
+      ++tally.calls;
+      tally.zeros += circumcircle_side(q[0], q[1], q[2], q[3]) == Sign::zero;
+      tally.small_integer_walk += reaches_small_integer_walk(q);
+      check_coplanar(pmp, q);
+      check_coplanar(pad, q);
+      AdaptiveKernel fitted;
+      fitted.fit_static_filter(std::span<const Point3>(q.data(), q.size()));
+      check_coplanar(perturbed<AdaptiveKernel>(fitted), q);
+      // The integer kernels work on their snapped points (B = 62 moves none of these).
+      std::vector<Point3> v(q.begin(), q.end());
+      perturbed<IntegerKernel> ki;
+      ki.snap_all(v);
+      RC_ASSERT(std::equal(v.begin(), v.end(), q.begin()));
+      check_coplanar(ki, q);
+      std::vector<Point3> w(q.begin(), q.end());
+      perturbed<IntegerKernel128> k128;
+      k128.snap_all(w);
+      if (mp.orient3d(w[0], w[1], w[2], w[3]) == Sign::zero && !collinear(w[0], w[1], w[2]))
+        check_coplanar(k128, {w[0], w[1], w[2], w[3]});
+    }
+  });
+  INFO("calls " << tally.calls << ", zeros " << tally.zeros << ", small-integer walk "
+                << tally.small_integer_walk);
+  CHECK(tally.zeros > tally.calls / 4);
+  CHECK(tally.small_integer_walk > tally.calls / 10);
+}
