@@ -617,4 +617,31 @@ ValidationReport validate(const PointSet& points, std::span<const std::uint32_t>
   return validate(std::span<const Point2>(points.p2), simplices);
 }
 
+namespace {
+template <int D>
+std::size_t orient_all(std::span<const Point<D>> pts, std::span<std::uint32_t> simplices) {
+  const ExactKernel k;
+  constexpr std::size_t n = D + 1;
+  std::size_t swapped = 0;
+  for (std::size_t s = 0; s + n <= simplices.size(); s += n) {
+    std::array<const Point<D>*, n> v{};
+    bool in_range = true;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (simplices[s + j] >= pts.size()) in_range = false;
+      else v[j] = &pts[simplices[s + j]];
+    }
+    if (in_range && orientation<D>(k, v) == Sign::negative) {
+      std::swap(simplices[s], simplices[s + 1]);
+      ++swapped;
+    }
+  }
+  return swapped;
+}
+}  // namespace
+
+std::size_t orient_positively(const PointSet& points, std::span<std::uint32_t> simplices) {
+  if (points.dimension == 3) return orient_all<3>(std::span<const Point3>(points.p3), simplices);
+  return orient_all<2>(std::span<const Point2>(points.p2), simplices);
+}
+
 }  // namespace dlab

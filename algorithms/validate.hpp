@@ -113,4 +113,12 @@ ValidationReport validate(std::span<const Point2> points, std::span<const std::u
 ValidationReport validate(std::span<const Point3> points, std::span<const std::uint32_t> simplices);
 ValidationReport validate(const PointSet& points, std::span<const std::uint32_t> simplices);
 
+// For simplices given in either orientation (scipy.spatial.Delaunay's are
+// mixed): swaps the first two vertices of each simplex whose exact orientation
+// (the convention above, decided by the same exact kernel) is negative, so that
+// validate() can check the rest as usual. A simplex of zero volume, or with an
+// index out of range, is left as it is for validate() to report. Returns the
+// number of simplices swapped.
+std::size_t orient_positively(const PointSet& points, std::span<std::uint32_t> simplices);
+
 }  // namespace dlab

@@ -1,5 +1,6 @@
 // `dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]
-//   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE] [--stats FILE.json]
+//   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]
+//   [--stats FILE.json]
 //   [--exact-sphere] [--enclosing-box]` (the last two: --algo george only)
 // (design.md section 5). Calls dlab::run(); after an inexact kernel (float,
 // epsilon) the result is checked by the exact validator, and an invalid or
@@ -63,7 +64,7 @@ int cmd_triangulate(int argc, char** argv) {
     a = parse_args(argc, argv, 2,
                    {"-o", "--algo", "--kernel", "--policy", "--order", "--seed", "--points-out",
                     "--stats"},
-                   {"--exact-sphere", "--enclosing-box"});
+                   {"--exact-sphere", "--enclosing-box", "--decimal"});
     if (a.positional.size() != 1)
       throw UsageError(a.positional.empty() ? "missing INPUT"
                                             : "unexpected argument '" + a.positional[1] + "'");
@@ -143,7 +144,8 @@ int cmd_triangulate(int argc, char** argv) {
   }
   try {
     simplex_out->write([&](std::ostream& out) { io::write_simplices(out, res.simplices, res.dimension); });
-    if (points_out) points_out->write([&](std::ostream& out) { io::write_points(out, res.points); });
+    const auto format = a.has("--decimal") ? io::FloatFormat::decimal : io::FloatFormat::hex;
+    if (points_out) points_out->write([&](std::ostream& out) { io::write_points(out, res.points, format); });
     if (stats_out) {
       io::StatsRecord rec;
       rec.options = opt;

@@ -12,17 +12,23 @@ namespace {
 const char* const kUsage =
     "usage:\n"
     "  dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
-    "                   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE]\n"
+    "                   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]\n"
     "                   [--stats FILE.json]\n"
-    "  dlab check INPUT SIMPLICES       exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
+    "  dlab check INPUT SIMPLICES [--orientation positive|any]\n"
+    "                                   exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
     "  dlab predicate NAME K COORD...   NAME: orient2d incircle orient3d insphere; prints -1, 0 or 1\n"
-    "  dlab gen GENERATOR [options]     writes a point set (dlab gen --help lists generators)\n"
+    "  dlab gen GENERATOR [--decimal] [options]  a point set (dlab gen --help lists generators)\n"
     "  dlab flip INPUT SIMPLICES [-o OUT]  flip a triangulation toward Delaunay (exit 1 if stuck)\n"
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
+    "  dlab --version                   version, git commit (at configure time) and compiler\n"
     "A: bowyer-watson (default), lawson, tanemura, george. K: adaptive (default), integer, mp,\n"
     "float, epsilon. INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), or a\n"
     "Triangle/TetGen .node file; '-' is standard input.\n"
+    "SIMPLICES: d+1 indices per line, each simplex positively oriented: det[v1-v0; ...; vd-v0] > 0,\n"
+    "i.e. Shewchuk's orient2d(v0,v1,v2) > 0 in 2D (counterclockwise) and orient3d(v0,v1,v2,v3) < 0\n"
+    "in 3D (CGAL's cells); --orientation any also takes the opposite (scipy's are mixed).\n"
+    "--decimal: coordinates as shortest round-trip decimals (numpy.loadtxt) instead of hex floats.\n"
     "Exit status: 0 success, 1 the algorithm failed or its result is invalid, 2 bad input or usage.\n";
 
 }  // namespace
@@ -41,6 +47,7 @@ int main(int argc, char** argv) {
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
     if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
+    if (cmd == "--version" || cmd == "version") return dlab::cli::cmd_version(argc, argv);
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << kUsage;
       return 0;

@@ -295,6 +295,128 @@ dlab_case(george_float_fails RC 1 ERR "george with the float kernel failed: poin
           ARGS triangulate neardup3.txt --algo george --kernel float -o /dev/null)
 dlab_case(george_integer_neardup RC 0 ARGS triangulate neardup3.txt --algo george --kernel integer -o /dev/null)
 
+# ---- fitting the user's other tools -------------------------------------------------
+# --version: CMake's project(VERSION) (passed in as VERSION), the commit, the compiler.
+if(NOT DEFINED VERSION)
+  set(VERSION "[0-9.]+")
+endif()
+set(version_re "^dlab ${VERSION} \\(delaunay-lab\\)\ncommit ([0-9a-f]+|unknown)[^\n]*\ncompiler [^\n]+\n$")
+dlab_case(version RC 0 OUT "${version_re}" ARGS --version)
+dlab_case(version_word RC 0 OUT "${version_re}" ARGS version)
+dlab_case(version_args RC 2 ERR "takes no arguments" ARGS --version now)
+dlab_case(help_lists_options RC 0 OUT "--orientation positive\\|any.*--decimal.*--version" ARGS --help)
+
+# Numbers that are not what they say: 1e400 overflows, 1e-400 is not zero but
+# rounds to zero; both are bad input (exit 2, file:line, the token), in INPUT and
+# in `dlab predicate`. A subnormal that is not zero is kept.
+file(WRITE "${WORK}/tiny.txt" "0 0\n1e-400 1\n1 0\n")
+file(WRITE "${WORK}/tiny_hex.txt" "0 0\n1 0\n0 -0x1p-1075\n")
+dlab_case(underflow RC 2 ERR "tiny.txt:2: coordinate '1e-400' is not zero but rounds to zero" ARGS triangulate tiny.txt)
+dlab_case(underflow_hex RC 2 ERR "tiny_hex.txt:3: coordinate '-0x1p-1075' is not zero but rounds to zero" ARGS check tiny_hex.txt kite_delaunay.txt)
+dlab_case(overflow RC 2 ERR "coordinate '1e400' overflows to infinity" ARGS predicate orient2d mp 0 0 1 0 0 1e400)
+dlab_case(predicate_underflow RC 2 ERR "argument 6: coordinate '1e-400' is not zero but rounds to zero" ARGS predicate orient2d mp 0 0 1 0 0 1e-400)
+dlab_case(predicate_zero_literal RC 0 OUT "^0\n$" ARGS predicate orient2d mp 0 0 1 0 0 -0e-400)
+dlab_case(predicate_subnormal RC 0 OUT "^1\n$" ARGS predicate orient2d mp 0 0 1 0 0 4.9406564584124654e-324)
+
+# A line longer than the reader's 1 MiB limit is refused (exit 2, file:line)
+# before the rest of it is read; the reader's memory stays bounded
+# (test_point_reader.cpp checks how much of an 8 MiB line it reads).
+string(REPEAT "1 " 600000 long_line)
+file(WRITE "${WORK}/long.txt" "0 0\n${long_line}\n")
+dlab_case(long_line RC 2 ERR "long.txt:2: line longer than 1048576 bytes" ARGS triangulate long.txt)
+
+# check --orientation any. scipy.spatial.Delaunay (scipy 1.10.1, Qhull) on 10
+# random 3D points: 8 of its 17 tetrahedra are negatively oriented (counted
+# with exact rational determinants in Python, outside dlab).
+file(WRITE "${WORK}/scipy3.txt" "0.036 0.515 0.466\n0.917 0.629 0.514\n0.497 0.248 0.012\n0.192 0.692 0.201\n0.37 0.004 0.83\n0.154 0.268 0.88\n0.51 0.847 0.64\n0.742 0.091 0.541\n0.508 0.871 0.361\n0.598 0.059 0.388\n")
+file(WRITE "${WORK}/scipy3.tet" "9 2 4 0\n5 6 4 1\n5 9 4 0\n5 9 6 0\n8 9 6 0\n8 9 2 1\n8 9 6 1\n7 5 6 4\n7 5 9 4\n7 5 9 6\n7 6 4 1\n7 9 6 1\n7 9 2 1\n3 9 2 0\n3 8 9 0\n3 8 9 2\n3 8 6 0\n")
+dlab_case(scipy_positive RC 1 OUT "orientation: 8 " ARGS check scipy3.txt scipy3.tet)
+dlab_case(scipy_any RC 0 OUT "\n8 simplices given negatively oriented[^\n]*\nvalid Delaunay\n$" ARGS check scipy3.txt scipy3.tet --orientation any)
+dlab_case(kite_cw_any RC 0 OUT "\n2 simplices given negatively oriented[^\n]*\nvalid Delaunay\n$" ARGS check kite.txt kite_cw.txt --orientation any)
+dlab_case(kite_ccw_any RC 0 OUT "\n0 simplices given negatively oriented[^\n]*\nvalid Delaunay\n$" ARGS check kite.txt kite_delaunay.txt --orientation any)
+dlab_case(kite_bad_any RC 1 OUT "not_delaunay: 1 " ARGS check kite.txt kite_bad.txt --orientation any)
+# A simplex of zero volume is refused in either orientation: 2 lies on the edge 0-1.
+file(WRITE "${WORK}/flat.txt" "0 0\n2 0\n1 0\n1 1\n")
+file(WRITE "${WORK}/flat_mixed.tri" "0 3 2\n2 1 3\n")
+file(WRITE "${WORK}/flat_degenerate.tri" "0 3 2\n2 1 3\n0 2 1\n")
+dlab_case(mixed_any RC 0 OUT "\n1 simplices given negatively oriented[^\n]*\nvalid Delaunay\n$" ARGS check flat.txt flat_mixed.tri --orientation any)
+dlab_case(degenerate_any RC 1 OUT "orientation: 1 \\(first: simplex 2\\)" ARGS check flat.txt flat_degenerate.tri --orientation any)
+read_output(cube_tets "${WORK}/cube.tet")
+file(WRITE "${WORK}/cube_flat.tet" "${cube_tets}0 1 2 3\n")  # four coplanar corners
+dlab_case(degenerate_any_3d RC 1 OUT "orientation: 1 " ARGS check cube.txt cube_flat.tet --orientation any)
+dlab_case(orientation_value RC 2 ERR "--orientation must be positive or any, not 'sideways'" ARGS check kite.txt kite_cw.txt --orientation sideways)
+
+# --decimal: shortest round-trip decimals (numpy.loadtxt reads no hex floats).
+# Values at their edges: the smallest subnormal, -0, the largest double, 0.1,
+# 2^53 and its neighbours, the largest subnormal and the smallest normal.
+file(WRITE "${WORK}/edges.txt"
+  "0x0.0000000000001p-1022 -0x0p+0\n0x1.fffffffffffffp+1023 0x1.999999999999ap-4\n"
+  "-0x1.fffffffffffffp+1023 0x1p+53\n0x1.0000000000001p+53 -0x1.fffffffffffffp+52\n"
+  "0x0.fffffffffffffp-1022 0x1p-1022\n")
+dlab_case(decimal_out RC 0 ARGS triangulate edges.txt -o /dev/null --points-out edges_dec.txt --decimal)
+dlab_case(hex_out RC 0 ARGS triangulate edges.txt -o /dev/null --points-out edges_hex.txt)
+read_output(dec "${WORK}/edges_dec.txt")
+if(NOT dec STREQUAL "5e-324 -0\n1.7976931348623157e+308 0.1\n-1.7976931348623157e+308 9007199254740992\n9007199254740994 -9007199254740991\n2.225073858507201e-308 2.2250738585072014e-308\n")
+  message(STATUS "FAIL decimal_out: ${dec}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# Read back through our reader, bit for bit: the hex written from the decimal file
+# equals the hex written from the original.
+dlab_case(decimal_back RC 0 ARGS triangulate edges_dec.txt -o /dev/null --points-out edges_back.txt)
+read_output(hex "${WORK}/edges_hex.txt")
+read_output(back "${WORK}/edges_back.txt")
+if(NOT hex STREQUAL back OR NOT hex MATCHES "^0x0.0000000000001p-1022 -0x0p\\+0\n")
+  message(STATUS "FAIL decimal round trip:\n${hex}\n${back}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# gen --decimal on subnormals and on huge values: the same doubles as gen's hex.
+foreach(g tiny huge)
+  dlab_case(gen_${g}_hex RC 0 ARGS gen ${g} --n 40 --seed 2 -o gen_${g}_hex.txt)
+  dlab_case(gen_${g}_dec RC 0 ARGS gen ${g} --n 40 --seed 2 --decimal -o gen_${g}_dec.txt)
+  dlab_case(gen_${g}_back RC 0 ARGS triangulate gen_${g}_dec.txt -o /dev/null --points-out gen_${g}_back.txt)
+  read_output(a "${WORK}/gen_${g}_hex.txt")
+  read_output(b "${WORK}/gen_${g}_back.txt")
+  read_output(c "${WORK}/gen_${g}_dec.txt")
+  if(NOT a STREQUAL b OR c MATCHES "0x")
+    message(STATUS "FAIL gen ${g} --decimal round trip")
+    math(EXPR failures "${failures} + 1")
+  endif()
+endforeach()
+# numpy.loadtxt reads the decimal files to the same bits as Python's float.fromhex
+# reads the hex ones (skipped where no python3 has numpy).
+set(numpy_python "")
+foreach(py python3 /usr/bin/python3)
+  execute_process(COMMAND ${py} -c "import numpy" RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
+  if(rc STREQUAL "0")
+    set(numpy_python ${py})
+    break()
+  endif()
+endforeach()
+if(numpy_python)
+  set(numpy_check [=[
+import struct, sys, numpy
+def bits(x): return struct.pack('<d', float(x))
+bad = 0
+for dec, hexf in zip(sys.argv[1::2], sys.argv[2::2]):
+    a = numpy.loadtxt(dec, dtype=numpy.float64, ndmin=2).ravel()
+    b = [float.fromhex(t) for t in open(hexf).read().split()]
+    if len(a) != len(b) or any(bits(x) != bits(y) for x, y in zip(a, b)):
+        print('mismatch:', dec, hexf); bad += 1
+sys.exit(bad)
+]=])
+  execute_process(COMMAND ${numpy_python} -c "${numpy_check}" edges_dec.txt edges_hex.txt
+                          gen_tiny_dec.txt gen_tiny_hex.txt gen_huge_dec.txt gen_huge_hex.txt
+                  WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc STREQUAL "0")
+    message(STATUS "ok   numpy_loadtxt (${numpy_python})")
+  else()
+    message(STATUS "FAIL numpy_loadtxt: ${rc} ${out} ${err}")
+    math(EXPR failures "${failures} + 1")
+  endif()
+else()
+  message(STATUS "skip numpy_loadtxt: no python3 with numpy (Debian: python3-numpy)")
+endif()
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} CLI case(s) failed")
 endif()
