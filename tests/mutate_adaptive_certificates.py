@@ -6,12 +6,12 @@ halved, a floor halved, an overflow factor halved, a guard threshold doubled) or
 drops one sign case of a two-sided test. For each, this script copies the kernel
 and its tests to a scratch directory (the shared tree is never edited), applies the
 exact textual edit listed below, builds a small test executable (the adaptive
-kernel, mp, tests/test_adaptive_kernel.cpp, tests/test_certificate_edges_adaptive.cpp
-and tests/test_gappa_constants.cpp), runs the "[adaptive]" and "[gappa]" tests and
-prints the test cases that fail. A mutation that no test catches is printed as
+kernel, mp and tests/test_certificate_edges_adaptive.cpp; with --all also
+tests/test_adaptive_kernel.cpp and tests/test_gappa_constants.cpp), runs its "[edges]"
+tests ("[adaptive]" and "[gappa]" with --all) and prints the test cases that fail. A mutation that no test catches is printed as
 "NOT CAUGHT".
 
-Usage: tests/mutate_adaptive_certificates.py [--only NAME ...] [--opt -O1]
+Usage: tests/mutate_adaptive_certificates.py [--only NAME ...] [--all] [--opt -O1]
 (from the repository root; needs g++, Catch2, RapidCheck, GMP, Boost).
 """
 import argparse
@@ -129,8 +129,13 @@ MUTATIONS = [
         "if (!(std::fabs(x) <= is_hi)) return", "if (!(std::fabs(x) <= 2 * is_hi)) return")]),
 ]
 
-TESTS = ["tests/test_adaptive_kernel.cpp", "tests/test_certificate_edges_adaptive.cpp",
-         "tests/test_gappa_constants.cpp"]
+EDGE_TESTS = ["tests/test_certificate_edges_adaptive.cpp"]
+ALL_TESTS = EDGE_TESTS + ["tests/test_adaptive_kernel.cpp", "tests/test_gappa_constants.cpp"]
+# Heavy headers, precompiled once.
+PCH = """#include <boost/multiprecision/gmp.hpp>
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+"""
 
 
 def run(cmd, cwd):
@@ -142,15 +147,21 @@ def main():
     ap.add_argument("--only", nargs="*", default=None, help="substrings of mutation names")
     ap.add_argument("--opt", default="-O1")
     ap.add_argument("--keep", action="store_true")
+    ap.add_argument("--all", action="store_true",
+                    help="also build and run tests/test_adaptive_kernel.cpp and test_gappa_constants.cpp")
     args = ap.parse_args()
     repo = os.getcwd()
     work = tempfile.mkdtemp(prefix="dlab-mutate-")
     for d in ["predicates", "tests"]:
         shutil.copytree(os.path.join(repo, d), os.path.join(work, d))
-    tests = [t for t in TESTS if os.path.exists(os.path.join(work, t))]
+    tests = [t for t in (ALL_TESTS if args.all else EDGE_TESTS) if os.path.exists(os.path.join(work, t))]
     flags = [args.opt, "-DNDEBUG", "-std=c++20", "-ffp-contract=off", "-fno-fast-math", "-I", work]
     build = os.path.join(work, "build")
     os.makedirs(build)
+    open(os.path.join(build, "pch.hpp"), "w").write(PCH)
+    r = run(["g++"] + flags + ["-x", "c++-header", "pch.hpp", "-o", "pch.hpp.gch"], build)
+    if r.returncode:
+        sys.exit(r.stdout)
     for src, obj in [("tests/main.cpp", "main.o"), ("predicates/mp_kernel.cpp", "mp.o")]:
         r = run(["g++", "-O0" if "main" in src else args.opt, "-std=c++20", "-I", work, "-c",
                  os.path.join(work, src), "-o", obj], build)
@@ -173,7 +184,8 @@ def main():
         for src in [CPP] + tests:
             obj = os.path.basename(src) + ".o"
             objs.append(obj)
-            procs.append(subprocess.Popen(["g++"] + flags + ["-c", os.path.join(work, src), "-o", obj],
+            pch = ["-include", "pch.hpp"] if src.startswith("tests/") else []
+            procs.append(subprocess.Popen(["g++"] + flags + pch + ["-c", os.path.join(work, src), "-o", obj],
                                           cwd=build, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True))
             if len(procs) == 2:
                 for p in procs:
@@ -189,7 +201,7 @@ def main():
         if r.returncode:
             print(f"{name}: LINK FAILED\n{r.stdout[-3000:]}")
             continue
-        r = subprocess.run(["./t", "[adaptive],[gappa]", "-r", "junit"], cwd=build, env=env,
+        r = subprocess.run(["./t", "[adaptive],[gappa]" if args.all else "[edges]", "-r", "junit"], cwd=build, env=env,
                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
         failed = []
         try:
