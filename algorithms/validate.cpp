@@ -97,21 +97,27 @@ Sign orientation(const ExactKernel& k, const Point3& a, const Point3& b, const P
 
 template <int D>
 Sign orientation(const ExactKernel& k, const std::array<const Point<D>*, D + 1>& v) {
+  // A repeated point makes two rows of det[v1-v0; ...; vd-v0] equal (or one
+  // zero): the sign is 0 exactly, without arithmetic. The cover-degree probe
+  // asks this often, and the floating filter cannot certify a zero.
+  for (int a = 1; a <= D; ++a)
+    for (int b = 0; b < a; ++b)
+      if (*v[a] == *v[b]) return Sign::zero;
   if constexpr (D == 2)
     return orientation(k, *v[0], *v[1], *v[2]);
   else
     return orientation(k, *v[0], *v[1], *v[2], *v[3]);
 }
 
-// q strictly inside the circumcircle / circumsphere of the positively oriented simplex v.
+// Where q lies for the circumcircle / circumsphere of the positively oriented
+// simplex v: positive strictly inside, zero on it, negative outside.
 template <int D>
-bool strictly_inside_sphere(const ExactKernel& k, const std::array<const Point<D>*, D + 1>& v,
-                            const Point<D>& q) {
+Sign sphere_side(const ExactKernel& k, const std::array<const Point<D>*, D + 1>& v, const Point<D>& q) {
   if constexpr (D == 2) {
-    return k.incircle(*v[0], *v[1], *v[2], q) == Sign::positive;
+    return k.incircle(*v[0], *v[1], *v[2], q);
   } else {
     // orient3d(v1,v0,v2,v3) = -orient3d(v0,v1,v2,v3) > 0, so insphere > 0 means inside.
-    return k.insphere(*v[1], *v[0], *v[2], *v[3], q) == Sign::positive;
+    return k.insphere(*v[1], *v[0], *v[2], *v[3], q);
   }
 }
 
@@ -535,8 +541,11 @@ class Validator {
       const std::size_t s = inc / V, t = o / V;
       if (!ok_[s] || !ok_[t]) continue;
       const Point<D>& far = p_[simplex(t)[o % V]];
-      if (strictly_inside_sphere<D>(k_, coords(s), far))
+      const Sign side = sphere_side<D>(k_, coords(s), far);
+      if (side == Sign::positive)
         flag(r_[Check::not_delaunay], static_cast<std::int64_t>(s), static_cast<int>(inc % V));
+      else if (side == Sign::zero)
+        ++r_.cospherical_facets;
     }
   }
 

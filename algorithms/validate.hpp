@@ -94,6 +94,13 @@ struct ValidationReport {
   std::size_t simplices = 0;
   std::size_t interior_facets = 0;
   std::size_t boundary_facets = 0;
+  // Interior facets whose far vertex lies exactly on the circumcircle /
+  // circumsphere of the simplex across (counted only when the Delaunay check
+  // runs). Not a failure; but when it is 0 in a valid Delaunay result, every
+  // interior facet is strictly locally Delaunay, the lifted surface is strictly
+  // convex, and the Delaunay triangulation is unique -- it is then also the
+  // symbolically perturbed one (the fuzzer skips its reference).
+  std::uint64_t cospherical_facets = 0;
   bool lower_dimensional = false;  // fewer than d+1 affinely independent points
   bool skipped = false;            // geometric checks skipped (bad indices)
   std::array<CheckResult, kCheckCount> checks{};

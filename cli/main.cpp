@@ -21,6 +21,10 @@ const char* const kUsage =
     "  dlab flip INPUT SIMPLICES [-o OUT]  flip a triangulation toward Delaunay (exit 1 if stuck)\n"
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
+    "  dlab fuzz --out DIR (--cases C | --budget T) [--algo LIST] [--kernel LIST] [--gen LIST]\n"
+    "            [--dim 2|3] [--n N|LO..HI] [--seed S] [--jobs J] [--shard k/n]\n"
+    "                                   classified robustness campaign (dlab fuzz --help)\n"
+    "  dlab fuzz merge DIR... --out DIR shards -> exactly the unsharded campaign\n"
     "  dlab --version                   version, git commit (at configure time) and compiler\n"
     "A: bowyer-watson (default), lawson, tanemura, george. K: adaptive (default), integer, mp,\n"
     "float, epsilon. INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), or a\n"
@@ -47,6 +51,7 @@ int main(int argc, char** argv) {
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
     if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
+    if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
     if (cmd == "--version" || cmd == "version") return dlab::cli::cmd_version(argc, argv);
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << kUsage;
