@@ -885,6 +885,147 @@ TEST_CASE("orient3d stages B and C: exact around their bounds, in every binade",
 }
 
 // ======================================================================================
+// Stages A and B of incircle and insphere (4.2, 4.3), on the lift-filter families above:
+// incircle a = (r, r), b = (-r, r), c = (xi, 0), d = (delta, 0); insphere a = (r, 0, h),
+// b = (-r, 0, h), c = (0, r, h), d = (xi, 0, 0), e = (delta, 0, 0). With delta = 0 every
+// difference is exact: det_A ~ 2 xi^2 R against P^ ~ 4 R r xi (incircle), so xi tunes
+// det_A / (cA P^) to one ulp around 1 and stage B answers when A declines (no tails).
+// With delta = 2^-80 r every x difference rounds away delta: B (exact, in rationals)
+// is tuned to rho times cB P^, and stage C answers when B declines.
+namespace {
+
+// Stage A of incircle and insphere in the documented order (4.2): det and P^.
+DetPerm ic_stage_a_doc(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double adx = a[0] - d[0], ady = a[1] - d[1], bdx = b[0] - d[0], bdy = b[1] - d[1],
+               cdx = c[0] - d[0], cdy = c[1] - d[1];
+  const double bdxcdy = bdx * cdy, bdycdx = bdy * cdx, cdxady = cdx * ady, cdyadx = cdy * adx,
+               adxbdy = adx * bdy, adybdx = ady * bdx;
+  const double al = adx * adx + ady * ady, bl = bdx * bdx + bdy * bdy, cl = cdx * cdx + cdy * cdy;
+  const double det = (al * (bdxcdy - bdycdx) + bl * (cdxady - cdyadx)) + cl * (adxbdy - adybdx);
+  const double perm = (std::fabs(bdxcdy) + std::fabs(bdycdx)) * al +
+                      (std::fabs(cdxady) + std::fabs(cdyadx)) * bl +
+                      (std::fabs(adxbdy) + std::fabs(adybdx)) * cl;
+  return {det, perm};
+}
+DetPerm is_stage_a_doc(const std::array<Point3, 5>& p) {
+  double x[4], y[4], z[4];
+  for (int i = 0; i < 4; ++i)
+    x[i] = p[i][0] - p[4][0], y[i] = p[i][1] - p[4][1], z[i] = p[i][2] - p[4][2];
+  auto pr = [&](int i, int j) { return x[i] * y[j]; };  // the twelve products
+  const double ab = pr(0, 1) - pr(1, 0), bc = pr(1, 2) - pr(2, 1), cd = pr(2, 3) - pr(3, 2),
+               da = pr(3, 0) - pr(0, 3), ac = pr(0, 2) - pr(2, 0), bd = pr(1, 3) - pr(3, 1);
+  const double abc = (z[0] * bc - z[1] * ac) + z[2] * ab, bcd = (z[1] * cd - z[2] * bd) + z[3] * bc,
+               cda = (z[2] * da + z[3] * ac) + z[0] * cd, dab = (z[3] * ab + z[0] * bd) + z[1] * da;
+  double l[4];
+  for (int i = 0; i < 4; ++i) l[i] = (x[i] * x[i] + y[i] * y[i]) + z[i] * z[i];
+  const double det = (l[3] * abc - l[2] * dab) + (l[1] * cda - l[0] * bcd);
+  auto pp = [&](int i, int j) { return std::fabs(pr(i, j)) + std::fabs(pr(j, i)); };
+  const double pab = pp(0, 1), pbc = pp(1, 2), pcd = pp(2, 3), pda = pp(3, 0), pac = pp(0, 2),
+               pbd = pp(1, 3);
+  const double az = std::fabs(z[0]), bz = std::fabs(z[1]), cz = std::fabs(z[2]), dz = std::fabs(z[3]);
+  const double pabc = (az * pbc + bz * pac) + cz * pab, pbcd = (bz * pcd + cz * pbd) + dz * pbc,
+               pcda = (cz * pda + dz * pac) + az * pcd, pdab = (dz * pab + az * pbd) + bz * pda;
+  const double perm = (l[3] * pabc + l[2] * pdab) + (l[1] * pcda + l[0] * pbcd);
+  return {det, perm};
+}
+
+// One input of a family: stage X in {A, B} and the documented values.
+struct StageCall {
+  Staged st;
+  Sign exact;
+  bool guard, earlier;  // guard of section 2 passed; the inline filter answered
+  double det_a, perm;   // stage A's det and P^ (documented order)
+  Q b;                  // exact determinant of the rounded differences
+  std::string where;
+};
+
+StageCall ic_call(double r, double xi, double delta, bool flip) {
+  std::array<Point2, 4> p = {{{r, r}, {-r, r}, {xi, 0}, {delta, 0}}};
+  if (flip) std::swap(p[0], p[1]);
+  const DetBound f = ic_filter_doc(p[0], p[1], p[2], p[3]);
+  const DetPerm a = ic_stage_a_doc(p[0], p[1], p[2], p[3]);
+  std::array<Point2, 3> q;
+  for (int i = 0; i < 3; ++i) q[i] = {p[i][0] - p[3][0], p[i][1] - p[3][1]};
+  return {AdaptiveKernel{}.incircle_staged(p[0], p[1], p[2], p[3]), mk.incircle(p[0], p[1], p[2], p[3]),
+          guard_passes<4, 2>(p, 4, adaptive::ic_hi), f.det > f.bound || -f.det > f.bound, a.det, a.bound,
+          det::incircle<Q>(q[0], q[1], q[2], Point2{0, 0}),
+          str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 2)};
+}
+StageCall is_call(double r, double xi, double delta, bool flip) {
+  std::array<Point3, 5> p = {{{r, 0, r}, {-r, 0, r}, {0, r, r}, {xi, 0, 0}, {delta, 0, 0}}};
+  if (flip) std::swap(p[0], p[1]);
+  const DetBound f = is_filter_doc(p[0], p[1], p[2], p[3], p[4]);
+  const DetPerm a = is_stage_a_doc(p);
+  std::array<Point3, 4> q;
+  for (int i = 0; i < 4; ++i) q[i] = {p[i][0] - p[4][0], p[i][1] - p[4][1], p[i][2] - p[4][2]};
+  return {AdaptiveKernel{}.insphere_staged(p[0], p[1], p[2], p[3], p[4]),
+          mk.insphere(p[0], p[1], p[2], p[3], p[4]), guard_passes<5, 3>(p, 5, adaptive::is_hi),
+          f.det > f.bound || -f.det > f.bound, a.det, a.bound,
+          det::insphere<Q>(q[0], q[1], q[2], q[3], Point3{0, 0, 0}),
+          str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()}, 3)};
+}
+
+// Stage A (delta = 0): det_A one ulp around cA P^; stage B (delta != 0): |B| at rho cB P^.
+std::string check_lift_stage(bool insphere, bool stage_b_edge, double r, double target, bool flip,
+                             EdgeHits& hits, int& below_reached) {
+  using namespace adaptive;
+  const double cA = insphere ? isA : icA, cB = insphere ? isB : icB;
+  const double delta = stage_b_edge ? std::ldexp(r, -80) : 0;
+  auto call = [&](double xi) { return insphere ? is_call(r, xi, delta, flip) : ic_call(r, xi, delta, flip); };
+  auto key = [&](double xi) {
+    const StageCall c = call(xi);
+    if (stage_b_edge) {
+      const double b = std::fabs(static_cast<double>(c.b));
+      return ord(b) - ord(target * (cB * c.perm));
+    }
+    return ord(std::fabs(c.det_a)) - ord(cA * c.perm) - static_cast<std::int64_t>(target);
+  };
+  const double xi = first_at_least(std::ldexp(r, -60), std::ldexp(r, -30), key);
+  const StageCall c = call(xi);
+  const std::string where = c.where + str(" stage ", stage_name(c.st.stage));
+  if (c.st.sign != c.exact) return "sign differs from mp at " + where;
+  if (c.earlier || !c.guard) return "";  // the filter answered (or mp): not this edge
+  const double ba = cA * c.perm;
+  const bool a_answers = c.det_a > ba || -c.det_a > ba;
+  if (!stage_b_edge) {
+    hits.note(c.det_a, ba);
+    if ((c.st.stage == stage_a) != a_answers)
+      return "stage A answered against its documented bound at " + where;
+    return "";
+  }
+  if (a_answers) return c.st.stage == stage_a ? "" : "stage A did not answer at " + where;
+  const double b = std::fabs(static_cast<double>(c.b)), bb = cB * c.perm;
+  if (b > 0.5 * bb && b < 0.999 * bb) ++below_reached;
+  if (c.st.stage == stage_b && !(b > bb * (1 - 0x1p-40)))
+    return "stage B answered below its documented bound at " + where;
+  if (c.st.stage != stage_b && b > bb * (1 + 0x1p-40))
+    return "stage B did not answer above its documented bound at " + where;
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("incircle and insphere stages A and B: exact around their bounds",
+          "[adaptive][edges]") {
+  for (bool insphere : {false, true}) {
+    EdgeHits hits;
+    int below = 0;
+    for (int e = -170; e <= 190; e += 3)
+      for (int i = 0; i < 3; ++i) {
+        const double r = std::ldexp(1 + i / 3.0 + 0x1p-40 * e, e);
+        for (int offset : {-1, 0, 1})
+          EDGE_CHECK_CATCH(check_lift_stage(insphere, false, r, offset, (e & 1) != 0, hits, below));
+        for (double rho : {0.6, 0.9, 0.999, 1.001, 1.1})
+          EDGE_CHECK_CATCH(check_lift_stage(insphere, true, r, rho, (e & 2) != 0, hits, below));
+      }
+    INFO((insphere ? "insphere" : "incircle") << ": stage A one ulp below / at / above " << show(hits)
+                                              << "; stage B reached at 0.5-0.999 of its bound " << below);
+    CHECK(hits.all());
+    CHECK(below > 0);
+  }
+}
+
+// ======================================================================================
 // Section 2: the guards at their thresholds and one step beyond. Each configuration is
 // exactly degenerate (det = 0): the filter declines, and the exact stages answer zero
 // (stage B: no tails) when the guard passes, mp when it fails.
