@@ -1026,6 +1026,139 @@ TEST_CASE("incircle and insphere stages A and B: exact around their bounds",
 }
 
 // ======================================================================================
+// Stage C of orient2d, incircle and insphere, and stage B of orient2d (4.3, 4.4). For C:
+// integer points whose rounded differences to the last point are exactly degenerate
+// (B = 0) while the last point, moved by delta along x, is not: every x difference
+// rounds delta away, and D = K + O(delta^2) is the first-order term stage C computes.
+// So det_C = D to a relative 2^-50, and the bound is cC P^ (no result_err: det_B = 0).
+// orient2d B: a = (M, y), b = (1, 1), c = (delta, 0) with y = M - k ulps: B = M - y,
+// bound o2B (M + y), tuned by the mantissa of M; stage C answers when B declines.
+namespace {
+
+std::string check_stage_c(int pred, double rho, int s, bool flip, int& below_reached) {
+  using namespace adaptive;
+  auto sc = [&](double x) { return std::ldexp(x, s); };
+  struct Out {
+    Q D;
+    double perm;
+    Staged st;
+    Sign exact;
+    bool guard;
+    std::string where;
+  };
+  auto run_at = [&](double delta) {
+    Out o;
+    if (pred == 2) {  // orient2d: a, b, c collinear with the origin after rounding
+      std::array<Point2, 3> p = {{{sc(1), sc(1)}, {sc(2), sc(2)}, {sc(delta), 0}}};
+      if (flip) std::swap(p[0], p[1]);
+      o.D = det::orient2d<Q>(p[0], p[1], p[2]);
+      const double acx = p[0][0] - p[2][0], acy = p[0][1] - p[2][1], bcx = p[1][0] - p[2][0],
+                   bcy = p[1][1] - p[2][1];
+      o.perm = std::fabs(acx * bcy) + std::fabs(acy * bcx);
+      o.st = AdaptiveKernel{}.orient2d_staged(p[0], p[1], p[2]);
+      o.exact = mk.orient2d(p[0], p[1], p[2]);
+      o.guard = guard_passes<3, 2>(p, 2, o2_hi);
+      o.where = str_points({p[0].data(), p[1].data(), p[2].data()}, 2);
+    } else if (pred == 4) {  // incircle: (2, 0), (3, 3), (-1, 1) and 0 on one circle
+      std::array<Point2, 4> p = {{{sc(2), 0}, {sc(3), sc(3)}, {sc(-1), sc(1)}, {sc(delta), 0}}};
+      if (flip) std::swap(p[0], p[1]);
+      o.D = det::incircle<Q>(p[0], p[1], p[2], p[3]);
+      o.perm = ic_stage_a_doc(p[0], p[1], p[2], p[3]).bound;
+      o.st = AdaptiveKernel{}.incircle_staged(p[0], p[1], p[2], p[3]);
+      o.exact = mk.incircle(p[0], p[1], p[2], p[3]);
+      o.guard = guard_passes<4, 2>(p, 4, ic_hi);
+      o.where = str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 2);
+    } else {  // insphere: on the sphere of centre (1, 2, 2) through 0
+      std::array<Point3, 5> p = {{{sc(2), sc(4), 0},
+                                  {sc(3), 0, sc(1)},
+                                  {sc(-1), 0, sc(1)},
+                                  {sc(2), 0, sc(4)},
+                                  {sc(delta), 0, 0}}};
+      if (flip) std::swap(p[0], p[1]);
+      o.D = det::insphere<Q>(p[0], p[1], p[2], p[3], p[4]);
+      o.perm = is_stage_a_doc(p).bound;
+      o.st = AdaptiveKernel{}.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
+      o.exact = mk.insphere(p[0], p[1], p[2], p[3], p[4]);
+      o.guard = guard_passes<5, 3>(p, 5, is_hi);
+      o.where = str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()}, 3);
+    }
+    return o;
+  };
+  const double cC = pred == 2 ? o2C : pred == 4 ? icC : isC;
+  auto key = [&](double delta) {
+    const Out o = run_at(delta);
+    return ord(std::fabs(static_cast<double>(o.D))) - ord(rho * (cC * o.perm));
+  };
+  const Out o = run_at(first_at_least(0x1p-200, 0x1p-56, key));
+  const std::string where = o.where + str(" stage ", stage_name(o.st.stage));
+  if (o.st.sign != o.exact) return "sign differs from mp at " + where;
+  if (!o.guard || o.st.stage < stage_c) return "";  // mp, or an earlier stage answered
+  const double d = std::fabs(static_cast<double>(o.D)), bound = cC * o.perm;
+  if (d > 0.5 * bound && d < 0.999 * bound) ++below_reached;
+  if (o.st.stage == stage_c && !(d > bound * (1 - 0x1p-40)))
+    return "stage C answered below its documented bound at " + where;
+  if (o.st.stage != stage_c && d > bound * (1 + 0x1p-40))
+    return "stage C did not answer above its documented bound at " + where;
+  return "";
+}
+
+std::string check_o2_stage_b(int k, double rho, int s, bool flip, int& below_reached) {
+  using namespace adaptive;
+  auto points = [&](double m) {
+    const double y = m - k * std::ldexp(1.0, std::ilogb(m) - 52);
+    std::array<Point2, 3> p = {{{std::ldexp(m, s), std::ldexp(y, s)},
+                                {std::ldexp(1.0, s), std::ldexp(1.0, s)},
+                                {std::ldexp(0x1p-80, s), 0}}};
+    if (flip) std::swap(p[0], p[1]);
+    return p;
+  };
+  auto parts = [&](const std::array<Point2, 3>& p) {  // |B| exactly, and o2B P^
+    const double acx = p[0][0] - p[2][0], acy = p[0][1] - p[2][1], bcx = p[1][0] - p[2][0],
+                 bcy = p[1][1] - p[2][1];
+    const double b = std::fabs(static_cast<double>(Q(acx) * Q(bcy) - Q(acy) * Q(bcx)));
+    return std::pair<double, double>{b, o2B * (std::fabs(acx * bcy) + std::fabs(acy * bcx))};
+  };
+  auto key = [&](double m) {
+    const auto [b, bound] = parts(points(m));
+    return ord(rho * bound) - ord(b);  // grows with m (b is fixed by the binade)
+  };
+  const auto p = points(first_at_least(1.0, std::nextafter(2.0, 0.0), key));
+  const auto [b, bound] = parts(p);
+  const Staged st = AdaptiveKernel{}.orient2d_staged(p[0], p[1], p[2]);
+  const std::string where = str_points({p[0].data(), p[1].data(), p[2].data()}, 2) +
+                            str(" |B| / bound ", b / bound, " stage ", stage_name(st.stage));
+  if (st.sign != mk.orient2d(p[0], p[1], p[2])) return "orient2d sign differs from mp at " + where;
+  if (!guard_passes<3, 2>(p, 2, o2_hi) || st.stage < stage_b) return "";
+  if (b > 0.5 * bound && b < 0.999 * bound) ++below_reached;
+  if (st.stage == stage_b && !(b > bound * (1 - 0x1p-40)))
+    return "orient2d stage B answered below its documented bound at " + where;
+  if (st.stage != stage_b && b > bound * (1 + 0x1p-40))
+    return "orient2d stage B did not answer above its documented bound at " + where;
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("stage C of orient2d, incircle, insphere and stage B of orient2d: exact around "
+          "their bounds", "[adaptive][edges]") {
+  std::array<int, 3> below_c{};
+  int below_b = 0;
+  for (int s = -150; s <= 150; s += 3)
+    for (double rho : {0.6, 0.9, 0.999, 1.001, 1.1}) {
+      for (int k = 0; k < 3; ++k)
+        EDGE_CHECK_CATCH(check_stage_c(k == 0 ? 2 : k == 1 ? 4 : 5, rho, s, (s & 1) != 0, below_c[k]));
+      for (int kk : {2, 3})
+        EDGE_CHECK_CATCH(check_o2_stage_b(kk, rho, s, (s & 2) != 0, below_b));
+    }
+  INFO("reached at 0.5-0.999 of the bound: C of orient2d " << below_c[0] << ", incircle "
+       << below_c[1] << ", insphere " << below_c[2] << "; B of orient2d " << below_b);
+  CHECK(below_c[0] > 0);
+  CHECK(below_c[1] > 0);
+  CHECK(below_c[2] > 0);
+  CHECK(below_b > 0);
+}
+
+// ======================================================================================
 // Section 2: the guards at their thresholds and one step beyond. Each configuration is
 // exactly degenerate (det = 0): the filter declines, and the exact stages answer zero
 // (stage B: no tails) when the guard passes, mp when it fails.
