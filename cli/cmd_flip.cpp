@@ -1,8 +1,11 @@
-// `dlab flip INPUT SIMPLICES [-o OUT] [--stats FILE.json]`: flip an existing
-// triangulation toward Delaunay (algorithms/flip_existing.hpp, exact perturbed
-// adaptive kernel).  Writes the resulting simplices; prints flips, passes and
-// the number of non-Delaunay facets left when 3D flipping is stuck.
-// Exit 0: the result is Delaunay; 1: stuck (3D) or failed; 2: bad input/usage.
+// `dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]`: flip a
+// given triangulation toward Delaunay (variants/flip.hpp, any kernel of the
+// registry). SIMPLICES must triangulate INPUT -- the exact validator decides;
+// otherwise exit 2 naming the file, the line of the first offending simplex
+// (or INPUT's line of a missing point) and the check that failed. The result is
+// judged by the exact validator and classified as by `dlab triangulate`
+// (variants/outcome.hpp): exit 0 ok, 1 not-delaunay (3D flips stuck), invalid or
+// reported, each with its one stderr line.
 //
 // `dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]`: writes a
 // valid but non-Delaunay triangulation of INPUT (fuzz/non_delaunay.hpp: the
@@ -11,24 +14,30 @@
 #include <cstdint>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 
-#include "algorithms/flip_existing.hpp"
+#include "algorithms/validate.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/kernels.hpp"
+#include "cli/outcome_report.hpp"
 #include "cli/point_reader.hpp"
 #include "cli/simplex_io.hpp"
+#include "cli/stats_json.hpp"
 #include "fuzz/non_delaunay.hpp"
+#include "variants/flip.hpp"
+#include "variants/outcome.hpp"
 
 namespace dlab::cli {
 
 namespace {
 
-// 1-based line of the k-th simplex (0-based) of a SIMPLICES file: its k-th
-// line that holds data (blank and '#'-comment lines skipped, as the reader
-// does); 0 if it cannot be told (standard input, unreadable).
-std::size_t simplex_line(const std::string& path, std::int64_t k) {
+// 1-based line of the k-th data line (0-based) of a file: blank and
+// '#'-comment lines skipped, as the readers do; 0 if it cannot be told
+// (standard input, unreadable, k < 0).
+std::size_t data_line(const std::string& path, std::int64_t k) {
   if (path == "-" || k < 0) return 0;
   std::ifstream f(path, std::ios::binary);
   std::string text;
@@ -42,6 +51,11 @@ std::size_t simplex_line(const std::string& path, std::int64_t k) {
     if (seen++ == k) return line;
   }
   return 0;
+}
+
+// INPUT's line of point k: its k-th data line (a .node file's header comes first).
+std::size_t point_line(const std::string& path, std::int64_t k) {
+  return data_line(path, k < 0 ? k : k + (io::is_node_file(path) ? 1 : 0));
 }
 
 void write_out(const std::optional<std::string>& path, const std::vector<std::uint32_t>& s, int dim) {
@@ -59,13 +73,21 @@ void write_out(const std::optional<std::string>& path, const std::vector<std::ui
 }  // namespace
 
 int cmd_flip(int argc, char** argv) {
+  RunOptions opt;
+  opt.algorithm = "flip";
+  opt.order = "input";
+  Args a;
+  PointSet points;
+  std::vector<std::uint32_t> in;
+  std::size_t distinct = 0;
+  std::unique_ptr<std::ofstream> stats;
   try {
-    const Args a = parse_args(argc, argv, 2, {"-o", "--seed", "--flips", "--stats"}, {"--make-start"});
+    a = parse_args(argc, argv, 2, {"-o", "--seed", "--flips", "--stats", "--kernel"}, {"--make-start"});
     const bool make = a.has("--make-start");
     if (a.positional.size() != (make ? 1u : 2u))
-      throw UsageError("usage: dlab flip INPUT SIMPLICES [-o OUT] [--stats FILE.json] | "
+      throw UsageError("usage: dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json] | "
                        "dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]");
-    const PointSet points = io::read_points(a.positional[0]);
+    points = io::read_points(a.positional[0]);
     const int dim = points.dimension;
     if (make) {
       const std::uint64_t seed = a.u64("--seed", 1);
@@ -79,34 +101,31 @@ int cmd_flip(int argc, char** argv) {
       write_out(a.get("-o"), s, dim);
       return 0;
     }
-    const std::vector<std::uint32_t> in = io::read_simplices(a.positional[1], dim, points.size());
-    const FlipExistingResult r = dim == 2 ? flip_existing<2>(points.p2, in) : flip_existing<3>(points.p3, in);
-    if (r.outcome != RunResult::Outcome::ok) {
-      if (r.message.rfind("not a triangulation", 0) != 0) {
-        std::cerr << "dlab flip: " << r.message << "\n";
-        return 1;
-      }
-      // Bad input (exit 2): name the file, and the line when one simplex is at fault.
-      std::cerr << "dlab flip: " << a.positional[1];
-      if (const std::size_t line = simplex_line(a.positional[1], r.bad_simplex)) std::cerr << ":" << line;
-      std::cerr << ": " << r.message << "\n";
+    opt.kernel = a.get("--kernel").value_or(opt.kernel);
+    if (!kernel_available(opt.kernel))
+      throw UsageError("unknown kernel '" + opt.kernel + "' (expected adaptive, integer, mp, float or epsilon)");
+    opt.policy = kernel_is_exact(opt.kernel) ? "sos" : "strict";
+    in = io::read_simplices(a.positional[1], dim, points.size());
+    // The given mesh must triangulate the points (design.md section 5: refused
+    // with exit 2 otherwise): the exact validator decides, whatever the kernel.
+    const ValidationReport given = validate(points, in);
+    if (!given.valid()) {
+      const Outcome why = classify_report(given, false);
+      const CheckResult& first = given[why.first_check];
+      std::cerr << "dlab flip: " << io::display_name(a.positional[1]);
+      if (const std::size_t line = data_line(a.positional[1], first.simplex)) std::cerr << ":" << line;
+      std::cerr << ": not a triangulation of " << io::display_name(a.positional[0]) << ": " << why.detail;
+      if (first.point >= 0 && why.first_check == Check::missing_vertex)
+        if (const std::size_t line = point_line(a.positional[0], first.point))
+          std::cerr << " (" << io::display_name(a.positional[0]) << ":" << line << ")";
+      std::cerr << "\n";
       return 2;
     }
-    write_out(a.get("-o"), r.simplices, dim);
-    if (auto st = a.get("--stats")) {
-      std::ofstream f(*st);
-      f << "{\n  \"counters\": {";
-      for (std::size_t i = 0; i < r.counters.size(); ++i)
-        f << (i ? "," : "") << "\n    \"" << r.counters[i].first << "\": " << r.counters[i].second;
-      f << "\n  }\n}\n";
+    distinct = given.distinct_points;
+    if (auto st = a.get("--stats")) {  // opened before the run: an unwritable path is a usage error now
+      stats = std::make_unique<std::ofstream>(*st, std::ios::binary);
+      if (!*stats) throw UsageError("cannot write '" + *st + "'");
     }
-    std::cerr << "dlab flip: " << r.flips << " flips in " << r.passes << " passes";
-    if (r.stuck_facets) {
-      std::cerr << "; stuck: " << r.stuck_facets << " non-Delaunay facets left, none flippable\n";
-      return 1;
-    }
-    std::cerr << "; Delaunay\n";
-    return 0;
   } catch (const UsageError& e) {
     std::cerr << "dlab flip: " << e.what() << "\n";
     return 2;
@@ -114,6 +133,50 @@ int cmd_flip(int argc, char** argv) {
     std::cerr << "dlab flip: " << e.what() << "\n";
     return 2;
   }
+
+  RunResult res;
+  try {
+    res = run_flip(points, in, opt);
+  } catch (const UsageError& e) {
+    std::cerr << "dlab flip: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {  // a run that throws has failed, not crashed
+    res = RunResult{};
+    res.dimension = points.dimension;
+    res.points = points;
+    res.outcome = RunResult::Outcome::failed;
+    res.message = std::string("exception: ") + e.what();
+  }
+  const std::uint64_t peak_rss = io::peak_rss_bytes();  // before the validator's
+  res.distinct_points = distinct;
+  announce_snapping("flip", res);
+  // Lawson's flips end Delaunay in 2D with an exact kernel; in 3D they may be
+  // stuck (Joe 1991), and snapping may move the points: the exact validator
+  // judges every result.
+  bool moved = false;
+  for (const auto& [key, v] : res.snapping) moved = moved || v != 0;
+  const bool exact_pair = kernel_is_exact(opt.kernel) && points.dimension == 2 && !moved;
+  const Outcome outcome = classify(points, res, exact_pair, Validate::always);
+  print_outcome("flip", outcome, "flip, " + opt.kernel + " kernel");
+  try {
+    write_out(a.get("-o"), res.simplices, points.dimension);
+    if (stats) {
+      io::StatsRecord rec;
+      rec.options = opt;
+      rec.input_points = points.size();
+      rec.result = &res;
+      rec.outcome = std::string(outcome_name(outcome.kind));
+      rec.message = outcome.kind == OutcomeClass::ok ? res.message : outcome.detail;
+      rec.validated = outcome.validated;
+      rec.peak_rss_bytes = peak_rss;
+      io::write_stats_json(*stats, rec);
+      if (!stats->flush()) throw UsageError("error writing '" + *a.get("--stats") + "'");
+    }
+  } catch (const UsageError& e) {
+    std::cerr << "dlab flip: " << e.what() << "\n";
+    return 2;
+  }
+  return exit_status(outcome.kind);
 }
 
 }  // namespace dlab::cli

@@ -1,19 +1,23 @@
 // `dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]
 //   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]
 //   [--stats FILE.json]
-//   [--exact-sphere] [--enclosing-box]` (the last two: --algo george only)
-// (design.md section 5). Calls dlab::run(); after an inexact kernel (float,
-// epsilon) the result is checked by the exact validator, and an invalid or
-// non-Delaunay result is a failure (exit 1) like an algorithm that reports one.
+//   [--exact-sphere] [--enclosing-box] [--validate]` (the first two of the last
+// three: --algo george only) (design.md section 5). Calls dlab::run() and
+// classifies the result (variants/outcome.hpp): the exact validator judges
+// every result that the pair does not promise to be Delaunay (inexact kernels,
+// George's floating sphere and enclosing box), and, with --validate, every
+// result. Exit status and the one stderr line follow the class; points the
+// integer kernel moved or merged are announced on stderr.
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 
-#include "algorithms/validate.hpp"
+#include "variants/outcome.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
+#include "cli/outcome_report.hpp"
 #include "cli/point_reader.hpp"
 #include "cli/point_writer.hpp"
 #include "cli/simplex_io.hpp"
@@ -44,15 +48,6 @@ class Output {
   std::ofstream file_;
 };
 
-const char* outcome_name(RunResult::Outcome o) {
-  switch (o) {
-    case RunResult::Outcome::ok: return "ok";
-    case RunResult::Outcome::lower_dimensional: return "lower_dimensional";
-    case RunResult::Outcome::failed: return "failed";
-  }
-  return "failed";
-}
-
 }  // namespace
 
 int cmd_triangulate(int argc, char** argv) {
@@ -64,7 +59,7 @@ int cmd_triangulate(int argc, char** argv) {
     a = parse_args(argc, argv, 2,
                    {"-o", "--algo", "--kernel", "--policy", "--order", "--seed", "--points-out",
                     "--stats"},
-                   {"--exact-sphere", "--enclosing-box", "--decimal"});
+                   {"--exact-sphere", "--enclosing-box", "--validate", "--decimal"});
     if (a.positional.size() != 1)
       throw UsageError(a.positional.empty() ? "missing INPUT"
                                             : "unexpected argument '" + a.positional[1] + "'");
@@ -93,8 +88,6 @@ int cmd_triangulate(int argc, char** argv) {
   }
 
   RunResult res;
-  std::string outcome, message;
-  int status = 0;
   try {
     res = run(points, opt);
   } catch (const UsageError& e) {
@@ -106,42 +99,14 @@ int cmd_triangulate(int argc, char** argv) {
     res.outcome = RunResult::Outcome::failed;
     res.message = std::string("exception: ") + e.what();
   }
-  outcome = outcome_name(res.outcome);
-  message = res.message;
+  // The run's peak memory, before the validator's.
+  const std::uint64_t peak_rss = io::peak_rss_bytes();
   if (res.points.size() != points.size()) res.points = points;  // e.g. after an exception
   res.dimension = points.dimension;
-  // Inexact kernels: the exact validator judges the result, a claimed
-  // lower-dimensional input included (float can call a full-dimensional set flat).
-  if (!kernel_is_exact(opt.kernel) && res.outcome != RunResult::Outcome::failed) {
-    std::string verdict;
-    try {
-      const ValidationReport rep = validate(res.points, res.simplices);
-      if (!rep.valid()) verdict = "invalid";
-      else if (!rep.delaunay()) verdict = "not_delaunay";
-      if (!verdict.empty()) {
-        message = rep.summary();
-        while (!message.empty() && message.back() == '\n') message.pop_back();
-      }
-    } catch (const std::exception& e) {
-      verdict = "invalid";
-      message = std::string("validator: ") + e.what();
-    }
-    if (!verdict.empty()) {
-      std::cerr << "dlab triangulate: the " << opt.kernel << " kernel's result is "
-                << (verdict == "invalid" ? "invalid" : "valid but not Delaunay")
-                << " (the algorithm itself reported " << outcome << "): " << message << "\n";
-      outcome = verdict;
-      status = 1;
-    }
-  }
-  if (status == 0 && res.outcome == RunResult::Outcome::lower_dimensional)
-    std::cerr << "dlab triangulate: lower-dimensional input, no simplices"
-              << (res.message.empty() ? "" : ": " + res.message) << "\n";
-  if (res.outcome == RunResult::Outcome::failed) {
-    std::cerr << "dlab triangulate: " << opt.algorithm << " with the " << opt.kernel
-              << " kernel failed: " << res.message << "\n";
-    status = 1;
-  }
+  announce_snapping("triangulate", res);
+  const Outcome outcome = classify(points, res, pair_is_exact(opt),
+                                   a.has("--validate") ? Validate::always : Validate::unless_exact);
+  print_outcome("triangulate", outcome, describe_pair(opt));
   try {
     simplex_out->write([&](std::ostream& out) { io::write_simplices(out, res.simplices, res.dimension); });
     const auto format = a.has("--decimal") ? io::FloatFormat::decimal : io::FloatFormat::hex;
@@ -151,16 +116,17 @@ int cmd_triangulate(int argc, char** argv) {
       rec.options = opt;
       rec.input_points = points.size();
       rec.result = &res;
-      rec.outcome = outcome;
-      rec.message = message;
-      rec.peak_rss_bytes = io::peak_rss_bytes();
+      rec.outcome = std::string(outcome_name(outcome.kind));
+      rec.message = outcome.kind == OutcomeClass::ok ? res.message : outcome.detail;
+      rec.validated = outcome.validated;
+      rec.peak_rss_bytes = peak_rss;
       stats_out->write([&](std::ostream& out) { io::write_stats_json(out, rec); });
     }
   } catch (const UsageError& e) {
     std::cerr << "dlab triangulate: " << e.what() << "\n";
     return 2;
   }
-  return status;
+  return exit_status(outcome.kind);
 }
 
 }  // namespace dlab::cli

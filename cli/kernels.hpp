@@ -26,7 +26,7 @@ inline bool kernel_available(std::string_view name) {
   return false;
 }
 
-inline bool kernel_is_exact(std::string_view name) { return name != "float" && name != "epsilon"; }
+using dlab::kernel_is_exact;  // variants/run.hpp
 
 // Calls f(kernel) with the kernel named `name`. The integer kernel's grid is
 // fitted to `pts` (the points of the call), so it answers for those points

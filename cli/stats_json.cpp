@@ -64,6 +64,7 @@ void write_stats_json(std::ostream& out, const StatsRecord& r) {
   out << "  \"dimension\": " << res.dimension << ",\n";
   out << "  \"input_points\": " << r.input_points << ",\n";
   out << "  \"distinct_points\": " << res.distinct_points << ",\n";
+  out << "  \"inserted_points\": " << res.inserted_points << ",\n";
   out << "  \"simplices\": " << res.simplices.size() / k << ",\n";
   out << "  \"seconds\": " << json_number(res.seconds) << ",\n";
   out << "  \"peak_rss_bytes\": " << r.peak_rss_bytes << ",\n";
@@ -80,6 +81,7 @@ void write_stats_json(std::ostream& out, const StatsRecord& r) {
     out << "    \"max_displacement\": " << json_number(res.max_snap_displacement) << "\n  }";
   }
   out << ",\n  \"outcome\": " << json_string(r.outcome) << ",\n";
+  out << "  \"validated\": " << (r.validated ? "true" : "false") << ",\n";
   out << "  \"message\": " << json_string(r.message) << "\n}\n";
 }
 

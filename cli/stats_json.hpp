@@ -1,7 +1,11 @@
-// The --stats JSON object of `dlab triangulate` (design.md section 5). Keys in
-// this fixed order: algorithm, kernel, policy, order, seed, dimension,
-// input_points, distinct_points, simplices, seconds, peak_rss_bytes,
-// predicates, counters, snapping, outcome, message. Everything but `seconds`
+// The --stats JSON object of `dlab triangulate` and `dlab flip` (design.md
+// section 5). Keys in this fixed order: algorithm, kernel, policy, order, seed,
+// dimension, input_points, distinct_points, inserted_points (input points
+// processed before the run stopped: variants/run.hpp), simplices, seconds,
+// peak_rss_bytes (before validation), predicates, counters, snapping, outcome
+// (the class of variants/outcome.hpp: ok, lower-dimensional, not-delaunay,
+// invalid, reported), validated (whether the exact validator judged the
+// result), message (the outcome's detail). Everything but `seconds`
 // and `peak_rss_bytes` is a function of the input, the options and the seed,
 // so the file is byte-identical across runs apart from those two values.
 #pragma once
@@ -18,7 +22,8 @@ struct StatsRecord {
   RunOptions options;
   std::size_t input_points = 0;
   const RunResult* result = nullptr;
-  std::string outcome;   // "ok", "lower_dimensional", "failed", "invalid"
+  std::string outcome;   // "ok", "lower-dimensional", "not-delaunay", "invalid", "reported"
+  bool validated = false;
   std::string message;
   std::uint64_t peak_rss_bytes = 0;
 };

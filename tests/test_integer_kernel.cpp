@@ -327,26 +327,53 @@ std::size_t brute_distinct(const std::vector<Point<D>>& v) {
   return n;
 }
 
+using Mpq = boost::multiprecision::mpq_rational;
+
+// The exact squared distance |a - b|^2 (doubles convert to rationals exactly).
+template <int D>
+Mpq exact_distance2(const Point<D>& a, const Point<D>& b) {
+  Mpq s = 0;
+  for (int j = 0; j < D; ++j) {
+    const Mpq d = Mpq(a[j]) - Mpq(b[j]);
+    s += d * d;
+  }
+  return s;
+}
+
+// d is within `ulps` ulps of sqrt(s): doubles that many steps away on either
+// side have squares that bracket s exactly.
+bool within_ulps_of_sqrt(double d, const Mpq& s, int ulps) {
+  double lo = d, hi = d;
+  for (int i = 0; i < ulps; ++i) {
+    lo = std::nextafter(lo, 0.0);
+    hi = std::nextafter(hi, INFINITY);
+  }
+  return Mpq(lo) * Mpq(lo) <= s && s <= Mpq(hi) * Mpq(hi);
+}
+
 template <class K, int D>
 void check_stats(std::vector<Point<D>> pts) {
   K k = K::template fit<D>(pts);
   const auto before = pts;
   const SnapStats st = k.snap_all(pts);
   std::size_t moved = 0;
-  double maxd = 0;
+  Mpq max2 = 0;  // exact squared largest displacement
   for (std::size_t i = 0; i < pts.size(); ++i) {
     REQUIRE(pts[i] == k.snap(before[i]));
     if (pts[i] != before[i]) {
       ++moved;
-      double d2 = 0;
-      for (int j = 0; j < D; ++j) d2 += (pts[i][j] - before[i][j]) * (pts[i][j] - before[i][j]);
-      maxd = std::max(maxd, std::sqrt(d2));
+      max2 = std::max(max2, exact_distance2<D>(pts[i], before[i]));
+      // integer_grid.hpp: each coordinate difference is exact in doubles.
+      for (int j = 0; j < D; ++j) CHECK(Mpq(pts[i][j] - before[i][j]) == Mpq(pts[i][j]) - Mpq(before[i][j]));
     }
   }
   CHECK(st.points == pts.size());
   CHECK(st.moved == moved);
   CHECK(st.merged == brute_distinct<D>(before) - brute_distinct<D>(pts));
-  CHECK(st.max_displacement == maxd);
+  // integer_grid.hpp: 2D within 1 ulp, 3D within 2 ulps.
+  INFO("max_displacement " << std::hexfloat << st.max_displacement);
+  CHECK(within_ulps_of_sqrt(st.max_displacement, max2, D == 2 ? 1 : 2));
+  CHECK((st.max_displacement > 0) == (moved > 0));
 }
 
 }  // namespace
@@ -385,6 +412,37 @@ TEST_CASE("snapping statistics match a brute-force recount", "[integer][grid]") 
   CHECK(st.max_displacement == 0.5);
   CHECK(h[2] == Point3{0, 0, 0});
   CHECK(h[5] == Point3{1, 0, 0});
+}
+
+TEST_CASE("snapping a subnormal to zero reports its displacement", "[integer][grid]") {
+  // With 1 in the set the grid step is 2^-61: every subnormal snaps to 0 and
+  // moves by exactly its own magnitude (squaring it in doubles underflows to 0).
+  for (const double tiny : {0x1p-1074, 0x1.8p-1070, -0x1p-1040, 0x1p-1022}) {
+    std::vector<Point2> p = {{0, 0}, {1, 1}, {tiny, 0}};
+    IntegerKernel k;
+    const SnapStats st = k.snap_all(p);
+    CHECK(p[2] == Point2{0, 0});
+    CHECK(st.moved == 1);
+    CHECK(st.merged == 1);  // onto the origin
+    CHECK(st.max_displacement == std::fabs(tiny));
+  }
+  // A 3-4-5 triangle of subnormals: exactly 5 * 2^-1074, in 2D and in 3D.
+  std::vector<Point2> p2 = {{1, 1}, {3 * 0x1p-1074, 4 * 0x1p-1074}};
+  std::vector<Point3> p3 = {{1, 1, 1}, {0, 3 * 0x1p-1074, 4 * 0x1p-1074}};
+  IntegerKernel k2, k3;
+  CHECK(k2.snap_all(p2).max_displacement == 5 * 0x1p-1074);
+  CHECK(k3.snap_all(p3).max_displacement == 5 * 0x1p-1074);
+  // Mixed magnitudes at random scales against the exact rational distance.
+  Rng r{29};
+  for (int round = 0; round < 50; ++round) {
+    std::vector<Point3> p = {{1, -1, 0.5}};
+    for (int i = 0; i < 20; ++i) {
+      const int e = -1074 + static_cast<int>(r.unit() * 1080);  // from subnormal to 2^6
+      p.push_back({std::ldexp(r.unit(), e), std::ldexp(r.unit() - 0.5, e), std::ldexp(r.unit(), e / 2)});
+    }
+    check_stats<IntegerKernel, 3>(p);
+    check_stats<IntegerKernel128, 3>(p);
+  }
 }
 
 TEST_CASE("snap_all fits an unfitted kernel, and keeps a fitted grid", "[integer][grid]") {

@@ -75,14 +75,17 @@ void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& 
   if (t.outcome != RunResult::Outcome::lower_dimensional) {
     // First occurrence: the smallest input index among the points merged into a vertex.
     std::vector<std::uint32_t> rep(pts.size(), kNotProcessed);
-    std::size_t distinct = 0;
+    std::size_t distinct = 0, processed = 0;
     for (std::size_t i = 0; i < t.merged_into.size(); ++i) {
       const std::uint32_t v = t.merged_into[i];
       if (v == kNotProcessed || v >= rep.size()) continue;
+      ++processed;
       if (v == i) ++distinct;
       rep[v] = std::min(rep[v], order[i]);
     }
-    r.distinct_points = distinct;
+    r.inserted_points = processed;
+    // After a failure only the processed points were seen: count the input's.
+    r.distinct_points = t.outcome == RunResult::Outcome::ok ? distinct : count_distinct<D>(pts);
     r.simplices = std::move(t.simplices);
     for (std::uint32_t& v : r.simplices) v = rep[v];
   }

@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -121,7 +122,9 @@ RunResult run_george(const PointSet& points, const RunOptions& o) {
   else
     r = o.exact_sphere ? run_algorithm<GeorgeExactSphere, K>(points, o) : run_algorithm<George, K>(points, o);
   if (r.outcome != RunResult::Outcome::ok) return r;
-  const ValidationReport rep = validate(r.points, r.simplices);
+  auto report = std::make_shared<const ValidationReport>(validate(r.points, r.simplices));
+  const ValidationReport& rep = *report;
+  r.validation = report;  // variants/outcome.hpp classifies the run with it
   r.counters.push_back({"valid", rep.valid() ? 1u : 0u});
   r.counters.push_back({"non_delaunay_facets", rep.non_delaunay_facets()});
   if (o.enclosing_box) {

@@ -78,6 +78,7 @@ void check_points(const std::vector<Point<D>>& pts) {
 
 std::vector<std::string> algorithm_names() { return {std::begin(kAlgorithms), std::end(kAlgorithms)}; }
 std::vector<std::string> kernel_names() { return {std::begin(kKernels), std::end(kKernels)}; }
+bool kernel_is_exact(std::string_view kernel) { return kernel != "float" && kernel != "epsilon"; }
 
 RunResult run(const PointSet& points, const RunOptions& options) {
   const auto algos = algorithm_names();

@@ -3,14 +3,18 @@
 // the finite simplices back with the counters of the run.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "predicates/point.hpp"
 
 namespace dlab {
+
+struct ValidationReport;  // algorithms/validate.hpp
 
 // Points of one dimension (2 or 3); only the matching vector is used.
 struct PointSet {
@@ -53,17 +57,26 @@ struct RunResult {
   // occurrence in the input.
   std::vector<std::uint32_t> simplices;
   PointSet points;           // the points actually triangulated (snapped by `integer`)
-  std::size_t distinct_points = 0;
+  std::size_t distinct_points = 0;  // of the input (of the snapped points for `integer`)
+  // Input points the algorithm processed -- inserted as a vertex or found to
+  // duplicate one -- before it stopped: all of them after a run to the end,
+  // fewer after a failure, 0 for lower-dimensional input (no simplex is built).
+  std::size_t inserted_points = 0;
   double seconds = 0;        // triangulating only
   Counters counters;         // algorithm counters: "walk_steps", "cavity_simplices", "flips_2_3", ...
   Counters predicates;       // "orient2d", "orient2d.A", ... calls per predicate and per stage answered
   Counters snapping;         // integer kernel: "points_moved", "points_merged", ...; empty otherwise
   double max_snap_displacement = 0;
+  // The exact validator's verdict on `simplices`, when the run computed it
+  // (George's runs do, variants/george_run.hpp); variants/outcome.hpp reuses it.
+  std::shared_ptr<const ValidationReport> validation;
 };
 
 RunResult run(const PointSet& points, const RunOptions& options);
 
 std::vector<std::string> algorithm_names();
 std::vector<std::string> kernel_names();
+// adaptive, integer, mp: true; float, epsilon (the inexact baselines): false.
+bool kernel_is_exact(std::string_view kernel);
 
 }  // namespace dlab

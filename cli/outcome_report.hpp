@@ -1,0 +1,18 @@
+// What `dlab triangulate` and `dlab flip` say on stderr about a run: the one
+// line of its outcome class (variants/outcome.hpp) and what snapping did.
+#pragma once
+#include <string_view>
+
+#include "variants/outcome.hpp"
+#include "variants/run.hpp"
+
+namespace dlab::cli {
+
+// "dlab COMMAND: snapped: M of N points moved to the integer kernel's grid, K
+// merged, largest displacement X" when the integer kernel moved or merged a point.
+void announce_snapping(std::string_view command, const RunResult& r);
+
+// The outcome's one stderr line (variants/outcome.hpp); nothing for ok.
+void print_outcome(std::string_view command, const Outcome& o, std::string_view pair);
+
+}  // namespace dlab::cli
