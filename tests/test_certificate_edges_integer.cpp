@@ -316,6 +316,77 @@ TEST_CASE("small_integer: every difference at B - 1, B, B + 1 at once", "[certif
   CHECK(certified > 1000);
 }
 
+namespace {
+
+// Lattice points of the circle (sphere) centred at (1/2, 0[, 0]) through
+// (0, t[, 0]) and (1, -t[, 0]): (2x - 1)^2 + (2y)^2 [+ (2z)^2] = 1 + 4t^2, x < 0.
+// With the query among them, those two are the lexicographically largest
+// points and differ by 1 in x and by 2t > B + 1 in y: the SoS keys
+// ((x + B)(2B + 1) + (y + B))... order them only with the full radix 2B + 1.
+template <int D>
+std::vector<Point<D>> symmetric_sphere(int t) {
+  std::vector<Point<D>> out;
+  const long n = 1 + 4L * t * t;
+  for (long u = -3; u * u <= n; u -= 2)  // u = 2x - 1, x < 0
+    for (long y = -t; y <= t; ++y) {
+      const long rest = n - u * u - 4 * y * y;  // (2z)^2
+      const double x = static_cast<double>((u + 1) / 2);
+      if constexpr (D == 2) {
+        if (rest == 0) out.push_back({x, double(y)});
+      } else {
+        const long z = std::lround(std::sqrt(static_cast<double>(rest / 4)));
+        if (rest >= 0 && rest % 4 == 0 && z * z == rest / 4) {
+          out.push_back({x, double(y), double(z)});
+          if (z != 0) out.push_back({x, double(y), double(-z)});
+        }
+      }
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("small_integer: the SoS keys order points a unit apart in x across the whole y range",
+          "[certificate][small_integer]") {
+  int walked = 0;
+  for (const int t : {2049, 2050, 2052}) {  // 2t > ic_bound + 1 = 4097
+    const auto pts = symmetric_sphere<2>(t);
+    const Point2 p1{0, double(t)}, p2{1, double(-t)};
+    for (const auto& c : pts)
+      for (const auto& d : pts) {
+        if (c == d) continue;
+        const Point2 q[4] = {p1, p2, c, d};
+        const auto r = small_integer::incircle_sos(q[0], q[1], q[2], q[3]);
+        if (!r.known) continue;  // a difference beyond ic_bound
+        REQUIRE(r.by_perturbation);  // exactly cocircular
+        REQUIRE(r.sign == pmp.incircle(q[0], q[1], q[2], q[3]));
+        const auto s = small_integer::incircle_sos(q[2], q[1], q[0], q[3]);
+        REQUIRE(s.sign == pmp.incircle(q[2], q[1], q[0], q[3]));
+        ++walked;
+      }
+  }
+  for (const int t : {257, 258, 260}) {  // 2t > is_bound + 1 = 513
+    const auto pts = symmetric_sphere<3>(t);
+    const Point3 p1{0, double(t), 0}, p2{1, double(-t), 0};
+    std::uint64_t h = 12345;  // a fixed LCG stream: triples of points
+    for (int trial = 0; trial < 4000; ++trial) {
+      std::size_t pick[3];
+      for (auto& i : pick) {
+        h = h * 6364136223846793005ULL + 1442695040888963407ULL;
+        i = static_cast<std::size_t>(h >> 33) % pts.size();
+      }
+      const Point3 q[5] = {p1, p2, pts[pick[0]], pts[pick[1]], pts[pick[2]]};
+      if (q[2] == q[3] || q[3] == q[4] || q[2] == q[4]) continue;
+      const auto r = small_integer::insphere_sos(q[0], q[1], q[2], q[3], q[4]);
+      if (!r.known) continue;  // a difference beyond is_bound
+      REQUIRE(r.by_perturbation);  // exactly cospherical
+      REQUIRE(r.sign == pmp.insphere(q[0], q[1], q[2], q[3], q[4]));
+      ++walked;
+    }
+  }
+  CHECK(walked > 100);
+}
+
 // ---- The integer kernel's bit budgets ----
 
 namespace {
