@@ -29,8 +29,8 @@ bool is_separator(char c) {
 // comments, and returns the tokens of each line with its 1-based number. The
 // tokens stay valid until the next call. A line longer than kMaxLineBytes is
 // refused as soon as the limit is passed, so the reader's memory beyond the
-// points stays below about 9 x kMaxLineBytes (the line, and a 16-byte token per
-// 2 bytes of it) + one 64 KiB chunk, whatever the input.
+// points stays below about 10 x kMaxLineBytes (the line's buffer, and a 16-byte
+// token per 2 bytes of it) + one 64 KiB chunk, whatever the input.
 class LineSplitter {
  public:
   LineSplitter(std::string_view text, const std::string& name) : text_(text), name_(name) {}

@@ -407,3 +407,38 @@ TEST_CASE("validate: broken 3D triangulations fail for the right reason", "[vali
     CHECK(!rc.valid());
   }
 }
+
+TEST_CASE("orient_positively: reversed simplices are turned back, zero volume is left", "[validate]") {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    dlab::PointSet ps2, ps3;
+    ps2.dimension = 2;
+    ps2.p2 = random2(24, seed);
+    ps3.dimension = 3;
+    ps3.p3 = random3(14, seed);
+    for (const dlab::PointSet* ps : {&ps2, &ps3}) {
+      const std::size_t k = static_cast<std::size_t>(ps->dimension) + 1;
+      const auto good = ps->dimension == 2 ? brute_delaunay(ps->p2) : brute_delaunay(ps->p3);
+      auto given = good;
+      CHECK(dlab::orient_positively(*ps, given) == 0);  // all positive already
+      CHECK(given == good);
+      // Reverse every simplex whose index is a multiple of 3 or 5 (swap its last two vertices).
+      std::size_t reversed = 0;
+      for (std::size_t s = 0; s * k < given.size(); ++s)
+        if (s % 3 == 0 || s % 5 == 0) {
+          std::swap(given[s * k + k - 2], given[s * k + k - 1]);
+          ++reversed;
+        }
+      CHECK_FALSE(dlab::validate(*ps, given).valid());
+      CHECK(dlab::orient_positively(*ps, given) == reversed);
+      const auto r = dlab::validate(*ps, given);
+      INFO(r.summary());
+      CHECK(r.delaunay());
+      // Zero volume (a repeated vertex) is neither positive nor negative: left as it is.
+      std::vector<std::uint32_t> flat(k, 0);
+      flat[1] = 1;
+      const auto before = flat;
+      CHECK(dlab::orient_positively(*ps, flat) == 0);
+      CHECK(flat == before);
+    }
+  }
+}
