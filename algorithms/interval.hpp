@@ -1,5 +1,5 @@
 // A minimal interval arithmetic on doubles, used ONLY to prune search regions
-// (algorithms/bucket_grid.hpp, algorithms/tanemura.hpp) and to filter the exact
+// (algorithms/kd_tree.hpp, algorithms/tanemura.hpp) and to filter the exact
 // start-up computations (algorithms/tanemura_start.cpp) — never to decide a
 // predicate.
 //

@@ -30,14 +30,17 @@
 //     never candidates, so the hull is made of the Delaunay facets of the
 //     points on it, exactly CGAL's hull rule (algorithms/oriented.hpp): a
 //     point between two hull vertices is a vertex.
-//   * Bucket grid (algorithms/bucket_grid.hpp): the search scans the cells
-//     around f (growing boxes, 0..2 cells beyond its bounding box) until a
-//     candidate appears (or, failing that, every block that can hold a point
-//     on the open side: none means a hull facet); then one pass over the
-//     cells that can meet the best circumsphere, blocks pruned against the
-//     open half-space and the current sphere. The sphere's centre and radius are ENCLOSED
-//     by interval arithmetic (algorithms/interval.hpp), so the region scanned
-//     always contains the whole ball: the grid never decides the winner.
+//   * Search structure (algorithms/kd_tree.hpp): a kd-tree with boxes. The
+//     search starts at the leaf of the facet's first vertex and climbs to the
+//     root, visiting each sibling subtree on the way, children nearer the
+//     facet's centroid first; a node is skipped when its box holds no point
+//     on the open side, or, once there is a best candidate, none in its
+//     circumsphere. The apex is near the facet, so the first leaves give a
+//     small sphere and the climb costs about one box test per level. The
+//     sphere's centre and radius are ENCLOSED by interval arithmetic
+//     (algorithms/interval.hpp), so a skipped box never meets the ball: the
+//     tree never decides the winner. (A uniform bucket grid, used here
+//     before, failed on uneven sets: see kd_tree.hpp.)
 //   * Inexact kernels: a facet met by a third simplex, or twice on the same
 //     side, a simplex budget exceeded, or a point left out end the run with
 //     Outcome::failed; every loop is bounded.
@@ -49,10 +52,10 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/bucket_grid.hpp"
 #include "algorithms/front.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/interval.hpp"
+#include "algorithms/kd_tree.hpp"
 #include "algorithms/oriented.hpp"
 #include "algorithms/tanemura_start.hpp"
 #include "algorithms/triangulation_result.hpp"
@@ -127,32 +130,32 @@ class Tanemura {
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                          const Ball& ball) const;
   bool point_may_be_in_ball(const Point<D>& p) const;
-  // Scans the cells of range [lo, hi] not yet scanned in this search, block by
-  // block; stops early when the best candidate changes and `stop_on_change`.
-  void scan_range(const Facet& f, const std::array<int, D>& lo, const std::array<int, D>& hi,
-                  bool use_ball, bool stop_on_change);
+  // Examines the points of a leaf; then the ball follows the best candidate.
+  void scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf);
+  // Visits the subtree of node k, pruned, the child nearer target_ first;
+  // with skip_first_leaves, not the leaves in first_leaves_ (scanned already).
+  void visit(const Facet& f, std::uint32_t k, bool skip_first_leaves);
+  double distance2_to_target(const typename KdTree<D>::Node& n) const;
 
   K k_;
   const Point<D>* pts_ = nullptr;
-  BucketGrid<D> grid_;
+  KdTree<D> tree_;
   Table table_;
   std::vector<Facet> queue_;
   std::vector<std::uint32_t> out_;
-  std::vector<std::uint32_t> cell_stamp_;
-  std::uint32_t stamp_ = 0;
   std::string message_;
   bool keep_closed_ = !K::exact;
   std::uint64_t max_simplices_ = 0;
   // search state
   std::array<Iv, D> f0_{};           // scaled first facet vertex
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
+  std::array<double, D> target_{};   // the facet's centroid (scaled, rounded): visit order only
+  std::array<std::uint32_t, D> first_leaves_{};  // the leaves of the facet's vertices
   std::uint32_t best_ = kNone;
-  bool changed_ = false;
-  Ball ball_;  // enclosure of the circumsphere of (f, best_) when use_ball
+  Ball ball_;  // enclosure of the circumsphere of (f, best_); stale while best_ == kNone
   // counters
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
-                cells_visited_ = 0, blocks_visited_ = 0, global_scans_ = 0, closed_ = 0,
-                duplicates_ = 0;
+                nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0;
 };
 
 template <class K, int D>
@@ -161,7 +164,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint3
   std::array<std::array<Iv, D>, V> q;
   for (int j = 0; j < V; ++j) {
     const Point<D>& p = pts_[j < D ? f[j] : c];
-    for (int i = 0; i < D; ++i) q[j][i] = grid_.scaled_iv(p[i]);
+    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(p[i]);
   }
   std::array<std::array<Iv, D>, D> e;
   std::array<Iv, D> w;
@@ -248,7 +251,7 @@ template <class K, int D>
 bool Tanemura<K, D>::point_may_be_in_ball(const Point<D>& p) const {
   std::array<double, D> x;
   for (int i = 0; i < D; ++i) {
-    const Iv v = grid_.scaled_iv(p[i]);
+    const Iv v = tree_.scaled_iv(p[i]);
     if (v.lo != v.hi) return true;  // underflowed scaling: do not prune
     x[i] = v.lo;
   }
@@ -256,85 +259,66 @@ bool Tanemura<K, D>::point_may_be_in_ball(const Point<D>& p) const {
 }
 
 template <class K, int D>
-void Tanemura<K, D>::scan_range(const Facet& f, const std::array<int, D>& lo,
-                                const std::array<int, D>& hi, bool use_ball, bool stop_on_change) {
-  constexpr int B = BucketGrid<D>::B;
-  std::array<int, D> blo, bhi, bi;
-  for (int i = 0; i < D; ++i) {
-    blo[i] = lo[i] / B;
-    bhi[i] = hi[i] / B;
-    bi[i] = blo[i];
-  }
-  for (;;) {
-    std::size_t b = 0;
-    for (int i = D - 1; i >= 0; --i) b = b * grid_.blocks(i) + bi[i];
-    if (grid_.block_points(b) != 0) {
-      ++blocks_visited_;
-      if (box_may_be_outer(grid_.block_lo(b), grid_.block_hi(b)) &&
-          (!use_ball || !ball_.bounded || box_may_meet_ball(grid_.block_lo(b), grid_.block_hi(b), ball_))) {
-        std::array<int, D> clo, chi, ci;
-        for (int i = 0; i < D; ++i) {
-          clo[i] = std::max(lo[i], bi[i] * B);
-          chi[i] = std::min(hi[i], bi[i] * B + B - 1);
-          ci[i] = clo[i];
-        }
-        for (;;) {
-          const std::uint32_t c = grid_.flatten(ci);
-          if (cell_stamp_[c] != stamp_) {
-            cell_stamp_[c] = stamp_;
-            ++cells_visited_;
-            for (std::uint32_t k = grid_.begin(c); k < grid_.end(c); ++k) {
-              const std::uint32_t id = grid_.id(k);
-              bool vertex = false;
-              for (int j = 0; j < D; ++j) vertex |= f[j] == id;
-              if (vertex) continue;
-              ++examined_;
-              const Point<D>& p = grid_.coords(k);
-              // Certainly outside the current best sphere: cannot improve it.
-              if (use_ball && ball_.bounded && !point_may_be_in_ball(p)) continue;
-              if (orient(f, p) != Sign::positive) continue;
-              ++candidates_;
-              if (best_ == kNone || inside(f, pts_[best_], p) == Sign::positive) {
-                best_ = id;
-                changed_ = true;
-              }
-            }
-            if (changed_) {
-              if (stop_on_change) return;
-              // The region only ever shrinks on its open side (the pencil), so
-              // the range stays valid; the pruning ball is the new, smaller one.
-              if (use_ball) {
-                ball_ = ball_of(f, best_);
-                ++improvements_;
-              }
-              changed_ = false;
-            }
-          }
-          int i = 0;
-          while (i < D && ++ci[i] > chi[i]) ci[i] = clo[i], ++i;
-          if (i == D) break;
-        }
-      }
+void Tanemura<K, D>::scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf) {
+  ++leaves_visited_;
+  for (std::uint32_t k = leaf.begin; k < leaf.end; ++k) {
+    const std::uint32_t id = tree_.id(k);
+    bool vertex = false;
+    for (int j = 0; j < D; ++j) vertex |= f[j] == id;
+    if (vertex) continue;
+    ++examined_;
+    const Point<D>& p = tree_.coords(k);
+    // Certainly outside the current best sphere: cannot improve it.
+    if (best_ != kNone && ball_.bounded && !point_may_be_in_ball(p)) continue;
+    if (orient(f, p) != Sign::positive) continue;
+    ++candidates_;
+    if (best_ == kNone || inside(f, pts_[best_], p) == Sign::positive) {
+      // A better candidate lies inside the current sphere, on the open side,
+      // and its own sphere's open-side part lies inside the old one's (same
+      // pencil, smaller offset): the pruning ball only ever shrinks there.
+      best_ = id;
+      ball_ = ball_of(f, best_);
+      ++improvements_;
     }
-    int i = 0;
-    while (i < D && ++bi[i] > bhi[i]) bi[i] = blo[i], ++i;
-    if (i == D) break;
   }
+}
+
+template <class K, int D>
+double Tanemura<K, D>::distance2_to_target(const typename KdTree<D>::Node& n) const {
+  double d2 = 0;
+  for (int i = 0; i < D; ++i) {
+    const double g = std::max({0.0, n.lo[i] - target_[i], target_[i] - n.hi[i]});
+    d2 += g * g;
+  }
+  return d2;
+}
+
+template <class K, int D>
+void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leaves) {
+  const typename KdTree<D>::Node& n = tree_.node(k);
+  ++nodes_visited_;
+  if (!box_may_be_outer(n.lo, n.hi)) return;
+  if (best_ != kNone && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
+  if (KdTree<D>::is_leaf(n)) {
+    if (skip_first_leaves)
+      for (int j = 0; j < D; ++j)
+        if (first_leaves_[j] == k) return;
+    return scan_leaf(f, n);
+  }
+  std::uint32_t a = tree_.left(k), b = n.right;
+  if (distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a))) std::swap(a, b);
+  visit(f, a, skip_first_leaves);
+  visit(f, b, skip_first_leaves);  // recursion depth: the tree's, about log2(n / kLeaf)
 }
 
 template <class K, int D>
 std::uint32_t Tanemura<K, D>::search(const Facet& f) {
   ++searches_;
-  if (++stamp_ == 0) {
-    std::fill(cell_stamp_.begin(), cell_stamp_.end(), 0u);
-    stamp_ = 1;
-  }
   best_ = kNone;
-  changed_ = false;
   // Outer normal enclosure (scaled): orient_pos(f, p) has the sign of nrm . (p - f0).
   std::array<std::array<Iv, D>, D> q;
   for (int j = 0; j < D; ++j)
-    for (int i = 0; i < D; ++i) q[j][i] = grid_.scaled_iv(pts_[f[j]][i]);
+    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[f[j]][i]);
   f0_ = q[0];
   if constexpr (D == 2) {
     const Iv ux = tight_sub(q[1][0], q[0][0]), uy = tight_sub(q[1][1], q[0][1]);
@@ -345,70 +329,26 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     const auto cross = [&](int j, int k) { return tight_sub(tight_mul(u[j], v[k]), tight_mul(u[k], v[j])); };
     nrm_ = {cross(1, 2), cross(2, 0), cross(0, 1)};
   }
-  // Phase 1: rings of cells around the facet until a first candidate.
-  std::array<int, D> flo, fhi, all_lo, all_hi;
   for (int i = 0; i < D; ++i) {
-    flo[i] = fhi[i] = grid_.cell_of_scaled(i, q[0][i].lo);
-    for (int j = 0; j < D; ++j) {
-      flo[i] = std::min(flo[i], grid_.cell_of_scaled(i, q[j][i].lo));
-      fhi[i] = std::max(fhi[i], grid_.cell_of_scaled(i, q[j][i].hi));
-    }
-    all_lo[i] = 0;
-    all_hi[i] = grid_.cells(i) - 1;
+    double s = 0;
+    for (int j = 0; j < D; ++j) s += q[j][i].lo;
+    target_[i] = s / D;
   }
-  // Phase 1: all cells near the facet (the best of them is usually the apex);
-  // failing that, any candidate from the blocks that may hold an outer point.
-  for (int ring = 0; ring <= 2 && best_ == kNone; ++ring) {
-    std::array<int, D> lo, hi;
-    for (int i = 0; i < D; ++i) {
-      lo[i] = std::max(0, flo[i] - ring);
-      hi[i] = std::min(grid_.cells(i) - 1, fhi[i] + ring);
-    }
-    scan_range(f, lo, hi, false, false);
+  // First the leaves of the facet's vertices (the apex is usually near one of
+  // them: a fan of long facets, as on collinear sets, finds it beside the
+  // near vertex); then bottom-up from the leaf of f[0], each sibling on the
+  // way to the root. Every node is visited or pruned: the search is
+  // exhaustive. The vertices' leaves are not scanned twice.
+  for (int j = 0; j < D; ++j) {
+    first_leaves_[j] = tree_.leaf_of(f[j]);
+    bool seen = false;
+    for (int i = 0; i < j; ++i) seen |= first_leaves_[i] == first_leaves_[j];
+    if (!seen) visit(f, first_leaves_[j], false);
   }
-  if (best_ == kNone) {
-    // Hull facets on the boundary of the points' bounding box (lattices, grids)
-    // are settled without scanning: nothing can be strictly outer.
-    if (!box_may_be_outer(grid_.all_lo(), grid_.all_hi())) return kNone;
-    ++global_scans_;
-    scan_range(f, all_lo, all_hi, false, true);
-    if (best_ == kNone) return kNone;  // every block that may hold an outer point was scanned
-  }
-  // Phase 2: the cells that can meet the circumsphere of (f, best). A better
-  // candidate d lies inside it, on the open side; its own sphere's open-side
-  // part is inside the old one's (same pencil, smaller offset), so the range
-  // of the CURRENT sphere always covers every later improvement. The range is
-  // scanned in growing boxes around the facet, each clipped to the current
-  // range: the apex is usually near the facet, and each improvement shrinks
-  // the range (a poor first candidate, nearly coplanar with f, has a huge
-  // sphere). Scanned cells are stamped, never examined twice; blocks are
-  // pruned against the current sphere. Ends when a box holds the whole range
-  // (at most one box per cell row).
-  ++improvements_;
-  ball_ = ball_of(f, best_);
-  changed_ = false;
-  for (int ring = 0;; ++ring) {
-    std::array<int, D> lo = all_lo, hi = all_hi;
-    if (ball_.bounded) {
-      const double r = sqrt_up(ball_.r2);
-      for (int i = 0; i < D; ++i) {
-        lo[i] = grid_.cell_of_scaled(i, Iv::down(ball_.centre[i].lo - r));
-        hi[i] = grid_.cell_of_scaled(i, Iv::up(ball_.centre[i].hi + r));
-      }
-    }
-    bool covered = true, empty = false;
-    std::array<int, D> blo, bhi;
-    for (int i = 0; i < D; ++i) {
-      blo[i] = std::max(lo[i], flo[i] - ring);
-      bhi[i] = std::min(hi[i], fhi[i] + ring);
-      covered &= blo[i] == lo[i] && bhi[i] == hi[i];
-      empty |= blo[i] > bhi[i];
-    }
-    if ((covered && !empty) || ring > grid_.max_cells()) {
-      scan_range(f, lo, hi, true, false);
-      break;
-    }
-    if (!empty) scan_range(f, blo, bhi, true, false);
+  std::uint32_t k = first_leaves_[0];
+  while (k != KdTree<D>::root()) {
+    visit(f, tree_.sibling(k), true);
+    k = tree_.node(k).parent;
   }
   return best_;
 }
@@ -489,11 +429,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   if constexpr (!K::exact)
     if (D == 3) max_simplices_ = std::min<std::uint64_t>(max_simplices_, 64 * nu + 1024);
 
-  // About 2 points per cell: measured (callgrind instruction counts, uniform
-  // 10^4 in 2D, 3000 in 3D) within 5% of the best of 1, 1.5, 2 and 3.
-  grid_.build(pts, uniq, 2.0);
-  cell_stamp_.assign(grid_.cell_count(), 0);
-  stamp_ = 0;
+  tree_.build(pts, uniq);
   out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 
   const StartFacet<D> start = find_start_facet<D>(pts, uniq);
@@ -546,7 +482,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       }
   }
   const std::uint64_t bytes =
-      grid_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Facet);
+      tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Facet);
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
     res.message = message_;
@@ -563,12 +499,11 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"points_examined_per_facet_x1000", per_facet_x1000},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
-      {"cells_visited", cells_visited_},
-      {"blocks_visited", blocks_visited_},
-      {"global_scans", global_scans_},
+      {"nodes_visited", nodes_visited_},
+      {"leaves_visited", leaves_visited_},
       {"max_front", table_.max_size()},
       {"duplicates", duplicates_},
-      {"grid_cells", grid_.cell_count()},
+      {"tree_nodes", tree_.node_count()},
       {"bytes_reserved", bytes},
   };
   return res;
