@@ -33,8 +33,8 @@ namespace dlab {
 template <int D>
 class KdTree {
  public:
-  // Leaf size: measured (callgrind instructions of `dlab triangulate --algo
-  // tanemura`, uniform 65 536 in 2D and 20 000 in 3D) against 4, 8 and 16.
+  // Leaf size: 8, not tuned yet (the time per facet on uniform 3D input is
+  // about 1.2x the bucket grid's: papers/triangulation_costs.md).
   static constexpr std::uint32_t kLeaf = 8;
   static constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;
 
