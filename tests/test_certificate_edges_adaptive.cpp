@@ -104,6 +104,11 @@ bool finite_all(std::initializer_list<double> v) {
   return true;
 }
 
+// The documented floors and guard thresholds, as numbers (error_bounds.md 2, 3.2-3.4), so
+// that the edges below are those of the document even if a constant in the kernel moves.
+constexpr double o3_lo = 0x1p-320, ic_lo = 0x1p-480, is_lo = 0x1p-185;
+constexpr double o2_hi = 0x1p490, o3_hi = 0x1p325, ic_hi = 0x1p245, is_hi = 0x1p195;
+
 // ---- Section 2: the exponent guard of the exact stages, as documented -------------
 // Lowest set bit of a finite nonzero double, by division (not the kernel's bit fiddling).
 int lowest_bit(double x) {
@@ -139,7 +144,7 @@ DetBound o3_filter_doc(const Point3& a, const Point3& b, const Point3& c, const 
                n2 = cdz * q2;
   const double s0p = m0 + m1, s1p = n0 + n1, s0 = s0p + m2, s1 = s1p + n2, det = s0 - s1;
   auto mx = [](double u, double v, double w) {
-    return std::max({std::fabs(u), std::fabs(v), std::fabs(w), adaptive::o3_ss_lo});
+    return std::max({std::fabs(u), std::fabs(v), std::fabs(w), o3_lo});
   };
   const double mxx = mx(adx, bdx, cdx), myy = mx(ady, bdy, cdy), mzz = mx(adz, bdz, cdz);
   const double bound = (adaptive::o3_ss / 8) * ((mxx * myy) * (8 * mzz));
@@ -155,7 +160,7 @@ double static_bound_doc(const std::vector<Point3>& pts) {
     for (const Point3& p : pts) lo = std::min(lo, p[j]), hi = std::max(hi, p[j]);
     g = std::max(g, hi - lo);
   }
-  const double w = std::max(4 * g, adaptive::o3_ss_lo);
+  const double w = std::max(4 * g, o3_lo);
   return (adaptive::o3_ss / 8) * ((w * w) * (8 * w));
 }
 
@@ -170,7 +175,7 @@ DetBound ic_filter_doc(const Point2& a, const Point2& b, const Point2& c, const 
                w1 = ady * bdx;
   const double bc = u0 - u1, ca = v0 - v1, ab = w0 - w1;
   const double t0 = al * bc, t1 = bl * ca, t2 = cl * ab, part = t0 + t1, det = part + t2;
-  const double s = std::max((al + bl) + cl, adaptive::ic_lift_lo);
+  const double s = std::max((al + bl) + cl, ic_lo);
   const double bound = adaptive::ic_lift_filter * (s * s);
   return {det, bound,
           !finite_all({ax2, ay2, bx2, by2, cx2, cy2, al, bl, cl, u0, u1, v0, v1, w0, w1, bc, ca,
@@ -205,9 +210,9 @@ DetBound is_filter_doc(const Point3& a, const Point3& b, const Point3& c, const 
   const double al = lift(aex, aey, aez), bl = lift(bex, bey, bez), cl = lift(cex, cey, cez),
                dl = lift(dex, dey, dez);
   const double det = k(k(k(dl * abc) - k(cl * dab)) + k(k(bl * cda) - k(al * bcd)));
-  const double L = std::max({al, bl, cl, dl, adaptive::is_lo * adaptive::is_lo});
+  const double L = std::max({al, bl, cl, dl, is_lo * is_lo});
   const double mz =
-      std::max({std::fabs(aez), std::fabs(bez), std::fabs(cez), std::fabs(dez), adaptive::is_lo});
+      std::max({std::fabs(aez), std::fabs(bez), std::fabs(cez), std::fabs(dez), is_lo});
   const double bound = (adaptive::is_lift_filter / 128) * (((128 * L) * L) * mz);
   bool overflow = false;
   for (double v : all) overflow = overflow || !std::isfinite(v);
@@ -280,13 +285,13 @@ TEST_CASE("adaptive constants are the ones error_bounds.md derives", "[adaptive]
   CHECK(o2_fast == o2A * (1 + 0x1p-40));
   CHECK(o2_fast_abs == 0x1p-1072);
   // Floors, overflow-related thresholds and guards (3.2-3.4, 2).
-  CHECK(o3_ss_lo == 0x1p-320);
-  CHECK(is_lo == 0x1p-185);
-  CHECK(ic_lift_lo == 0x1p-480);
-  CHECK(o2_hi == 0x1p490);
-  CHECK(o3_hi == 0x1p325);
-  CHECK(ic_hi == 0x1p245);
-  CHECK(is_hi == 0x1p195);
+  CHECK(adaptive::o3_ss_lo == 0x1p-320);
+  CHECK(adaptive::is_lo == 0x1p-185);
+  CHECK(adaptive::ic_lift_lo == 0x1p-480);
+  CHECK(adaptive::o2_hi == 0x1p490);
+  CHECK(adaptive::o3_hi == 0x1p325);
+  CHECK(adaptive::ic_hi == 0x1p245);
+  CHECK(adaptive::is_hi == 0x1p195);
 
   // The filter constants against the calculus of 3.1, recomputed here in exact
   // rationals on the documented expression trees: each constant must be at least
@@ -397,9 +402,10 @@ std::string check_o3_filter(const O3Case& k, EdgeHits& hits) {
   if (f.overflow && s.stage == adaptive::stage_filter)
     return "orient3d filter answered on an overflowed determinant at " + where;
   // The kernel's exported bound is the documented one, bit for bit.
-  const double kb = adaptive::orient3d_filter(p[0], p[1], p[2], p[3]).bound;
-  if (!(kb == f.bound || (std::isnan(kb) && std::isnan(f.bound))))
-    return "orient3d filter bound differs from error_bounds.md 3.4 at " + where;
+  for (const double kb : {adaptive::orient3d_filter(p[0], p[1], p[2], p[3]).bound,
+                          adaptive::orient3d_filter_scalar(p[0], p[1], p[2], p[3]).bound})
+    if (!(kb == f.bound || (std::isnan(kb) && std::isnan(f.bound))))
+      return "orient3d filter bound (SSE2 or scalar) differs from error_bounds.md 3.4 at " + where;
   return "";
 }
 
@@ -704,7 +710,7 @@ std::string check_o2(int k, int s, int offset, bool swap_ab, EdgeHits& hits) {
     const bool opposite = (dl > 0 && dr <= 0) || (dl < 0 && dr >= 0) || dl == 0;
     const double slow = adaptive::o2A * std::fabs(dl + dr);
     const bool slow_answers = opposite || f.det > slow || -f.det > slow;
-    if (!slow_answers || !guard_passes<3, 2>(p, 2, adaptive::o2_hi))
+    if (!slow_answers || !guard_passes<3, 2>(p, 2, ::o2_hi))
       return "orient2d stage A answered at or below its documented bound at " + where;
   }
   return "";
@@ -769,7 +775,7 @@ std::string check_o3_stage_a(double y1, int j, int s, int offset, bool flip, Edg
   if (st.sign != exact) return "orient3d sign differs from mp at " + where;
   const bool filter = f.det > f.bound || -f.det > f.bound;
   if (filter) return st.stage == adaptive::stage_filter ? "" : "filter did not answer at " + where;
-  if (!guard_passes<4, 3>(p, 3, adaptive::o3_hi))
+  if (!guard_passes<4, 3>(p, 3, ::o3_hi))
     return st.stage == adaptive::stage_mp ? "" : "guard did not send to mp at " + where;
   hits.note(a.det, a.bound);
   const bool answers = a.det > a.bound || -a.det > a.bound;
@@ -858,7 +864,7 @@ std::string check_o3_stage_bc(bool for_c, double rho, int s, double y1, bool fli
   const std::string where = str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 3) +
                             str(" |B| / bound ", b / bound, " stage ", stage_name(st.stage));
   if (st.sign != mk.orient3d(p[0], p[1], p[2], p[3])) return "orient3d sign differs from mp at " + where;
-  if (!guard_passes<4, 3>(p, 3, o3_hi)) return "";
+  if (!guard_passes<4, 3>(p, 3, ::o3_hi)) return "";
   const unsigned char x = for_c ? stage_c : stage_b;
   if (st.stage < x) return "";  // an earlier stage answered (checked by the tests above)
   if (b > 0.5 * bound && b < 0.999 * bound) ++below_reached[for_c ? 1 : 0];
@@ -947,7 +953,7 @@ StageCall ic_call(double r, double xi, double delta, bool flip) {
   std::array<Point2, 3> q;
   for (int i = 0; i < 3; ++i) q[i] = {p[i][0] - p[3][0], p[i][1] - p[3][1]};
   return {AdaptiveKernel{}.incircle_staged(p[0], p[1], p[2], p[3]), mk.incircle(p[0], p[1], p[2], p[3]),
-          guard_passes<4, 2>(p, 4, adaptive::ic_hi), f.det > f.bound || -f.det > f.bound, a.det, a.bound,
+          guard_passes<4, 2>(p, 4, ::ic_hi), f.det > f.bound || -f.det > f.bound, a.det, a.bound,
           det::incircle<Q>(q[0], q[1], q[2], Point2{0, 0}),
           str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 2)};
 }
@@ -959,7 +965,7 @@ StageCall is_call(double r, double xi, double delta, bool flip) {
   std::array<Point3, 4> q;
   for (int i = 0; i < 4; ++i) q[i] = {p[i][0] - p[4][0], p[i][1] - p[4][1], p[i][2] - p[4][2]};
   return {AdaptiveKernel{}.insphere_staged(p[0], p[1], p[2], p[3], p[4]),
-          mk.insphere(p[0], p[1], p[2], p[3], p[4]), guard_passes<5, 3>(p, 5, adaptive::is_hi),
+          mk.insphere(p[0], p[1], p[2], p[3], p[4]), guard_passes<5, 3>(p, 5, ::is_hi),
           f.det > f.bound || -f.det > f.bound, a.det, a.bound,
           det::insphere<Q>(q[0], q[1], q[2], q[3], Point3{0, 0, 0}),
           str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()}, 3)};
@@ -1057,7 +1063,7 @@ std::string check_stage_c(int pred, double rho, int s, bool flip, int& below_rea
       o.perm = std::fabs(acx * bcy) + std::fabs(acy * bcx);
       o.st = AdaptiveKernel{}.orient2d_staged(p[0], p[1], p[2]);
       o.exact = mk.orient2d(p[0], p[1], p[2]);
-      o.guard = guard_passes<3, 2>(p, 2, o2_hi);
+      o.guard = guard_passes<3, 2>(p, 2, ::o2_hi);
       o.where = str_points({p[0].data(), p[1].data(), p[2].data()}, 2);
     } else if (pred == 4) {  // incircle: (2, 0), (3, 3), (-1, 1) and 0 on one circle
       std::array<Point2, 4> p = {{{sc(2), 0}, {sc(3), sc(3)}, {sc(-1), sc(1)}, {sc(delta), 0}}};
@@ -1066,7 +1072,7 @@ std::string check_stage_c(int pred, double rho, int s, bool flip, int& below_rea
       o.perm = ic_stage_a_doc(p[0], p[1], p[2], p[3]).bound;
       o.st = AdaptiveKernel{}.incircle_staged(p[0], p[1], p[2], p[3]);
       o.exact = mk.incircle(p[0], p[1], p[2], p[3]);
-      o.guard = guard_passes<4, 2>(p, 4, ic_hi);
+      o.guard = guard_passes<4, 2>(p, 4, ::ic_hi);
       o.where = str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 2);
     } else {  // insphere: on the sphere of centre (1, 2, 2) through 0
       std::array<Point3, 5> p = {{{sc(2), sc(4), 0},
@@ -1079,7 +1085,7 @@ std::string check_stage_c(int pred, double rho, int s, bool flip, int& below_rea
       o.perm = is_stage_a_doc(p).bound;
       o.st = AdaptiveKernel{}.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
       o.exact = mk.insphere(p[0], p[1], p[2], p[3], p[4]);
-      o.guard = guard_passes<5, 3>(p, 5, is_hi);
+      o.guard = guard_passes<5, 3>(p, 5, ::is_hi);
       o.where = str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()}, 3);
     }
     return o;
@@ -1128,7 +1134,7 @@ std::string check_o2_stage_b(int k, double rho, int s, bool flip, int& below_rea
   const std::string where = str_points({p[0].data(), p[1].data(), p[2].data()}, 2) +
                             str(" |B| / bound ", b / bound, " stage ", stage_name(st.stage));
   if (st.sign != mk.orient2d(p[0], p[1], p[2])) return "orient2d sign differs from mp at " + where;
-  if (!guard_passes<3, 2>(p, 2, o2_hi) || st.stage < stage_b) return "";
+  if (!guard_passes<3, 2>(p, 2, ::o2_hi) || st.stage < stage_b) return "";
   if (b > 0.5 * bound && b < 0.999 * bound) ++below_reached;
   if (st.stage == stage_b && !(b > bound * (1 - 0x1p-40)))
     return "orient2d stage B answered below its documented bound at " + where;
@@ -1189,21 +1195,21 @@ std::string check_guards(double u, bool flip) {
   {
     const std::array<Point2, 3> p = {{{s * u, u}, {s * u / 2, u / 2}, {0, 0}}};
     expect("orient2d", ak.orient2d_staged(p[0], p[1], p[2]), mk.orient2d(p[0], p[1], p[2]),
-           guard_passes<3, 2>(p, 2, adaptive::o2_hi), str_points({p[0].data(), p[1].data(), p[2].data()}, 2));
+           guard_passes<3, 2>(p, 2, ::o2_hi), str_points({p[0].data(), p[1].data(), p[2].data()}, 2));
   }
   // incircle: four cocircular points.
   {
     const Zero z = zero_config(s * u, u);
     const auto& p = z.p2;
     expect("incircle", ak.incircle_staged(p[0], p[1], p[2], p[3]),
-           mk.incircle(p[0], p[1], p[2], p[3]), guard_passes<4, 2>(p, 4, adaptive::ic_hi),
+           mk.incircle(p[0], p[1], p[2], p[3]), guard_passes<4, 2>(p, 4, ::ic_hi),
            str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 2));
   }
   // orient3d: four coplanar points (z = 0).
   {
     const std::array<Point3, 4> p = {{{s * u, 0, 0}, {0, u, 0}, {u, s * u, 0}, {0, 0, 0}}};
     expect("orient3d", ak.orient3d_staged(p[0], p[1], p[2], p[3]),
-           mk.orient3d(p[0], p[1], p[2], p[3]), guard_passes<4, 3>(p, 3, adaptive::o3_hi),
+           mk.orient3d(p[0], p[1], p[2], p[3]), guard_passes<4, 3>(p, 3, ::o3_hi),
            str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data()}, 3));
   }
   // insphere: five cospherical points.
@@ -1211,7 +1217,7 @@ std::string check_guards(double u, bool flip) {
     const Zero z = zero_config(s * u, u);
     const auto& p = z.p3;
     expect("insphere", ak.insphere_staged(p[0], p[1], p[2], p[3], p[4]),
-           mk.insphere(p[0], p[1], p[2], p[3], p[4]), guard_passes<5, 3>(p, 5, adaptive::is_hi),
+           mk.insphere(p[0], p[1], p[2], p[3], p[4]), guard_passes<5, 3>(p, 5, ::is_hi),
            str_points({p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()}, 3));
   }
   return err;
@@ -1229,7 +1235,7 @@ std::string check_stage_d_guard(double X) {
   const Staged st = AdaptiveKernel{}.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
   const std::string where = str(std::hexfloat, X, " stage ", stage_name(st.stage));
   if (st.sign != mk.insphere(p[0], p[1], p[2], p[3], p[4])) return "sign differs from mp at X = " + where;
-  const bool raw_ok = std::fabs(X) <= 0x1p195;
+  const bool raw_ok = std::fabs(X) <= is_hi;
   if (raw_ok && st.stage != adaptive::stage_d) return "stage D did not run at X = " + where;
   if (!raw_ok && st.stage != adaptive::stage_mp) return "stage D's raw guard let X = " + where;
   return "";
@@ -1250,7 +1256,7 @@ TEST_CASE("exponent guards: exact at their thresholds and one step beyond", "[ad
   // Overflow: the largest |difference| at H, one ulp above and below, and a binade above,
   // for H = 2^490, 2^325, 2^245, 2^195 (the configurations' largest difference is u for
   // orient2d and orient3d, 2u for incircle and insphere).
-  for (double H : {adaptive::o2_hi, adaptive::o3_hi, adaptive::ic_hi, adaptive::is_hi})
+  for (double H : {o2_hi, o3_hi, ic_hi, is_hi})
     for (double span : {1.0, 2.0})
       for (double u : {H / span, std::nextafter(H / span, inf), std::nextafter(H / span, 0.0), 2 * H / span})
         for (bool flip : {false, true}) {
@@ -1331,6 +1337,25 @@ TEST_CASE("inline filters never answer on an overflowed determinant", "[adaptive
       }
     }
   });
+  {  // A fixed witness of the last case (found by a search over the same family).
+    const std::array<Point3, 5> p = {{{0x1.3af19196b068fp+205, -0x1.0a02e227b8178p+200, 0x1.dc562bacde353p+201},
+                                      {-0x1.b796e921b98abp+203, 0x1.2743ba18cfa7ep+205, -0x1.dc562bacde353p+201},
+                                      {-0x1.8c2f8b8bc3bdbp+204, -0x1.e9f87cc3aa6cdp+204, 0x1.dc562bacde353p+201},
+                                      {-0x1.44a05ac2c5ddfp+203, 0x1.3b329487516fep+205, 0x1.57708d0b38583p+201},
+                                      {0, 0, 0}}};
+    const DetBound f = is_filter_doc(p[0], p[1], p[2], p[3], p[4]);
+    double L = 0, mz = 0;
+    for (int i = 0; i < 4; ++i) {
+      L = std::max(L, (p[i][0] * p[i][0] + p[i][1] * p[i][1]) + p[i][2] * p[i][2]);
+      mz = std::max(mz, std::fabs(p[i][2]));
+    }
+    REQUIRE(std::isinf(f.det));
+    REQUIRE(std::isfinite(adaptive::is_lift_filter * ((L * L) * mz)));
+    const Staged st = AdaptiveKernel{}.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
+    CHECK(st.stage != adaptive::stage_filter);
+    CHECK(st.sign == mk.insphere(p[0], p[1], p[2], p[3], p[4]));
+    ++is_over_finite_l2mz;
+  }
   INFO("overflowed: orient3d " << o3_over << ", incircle " << ic_over << ", insphere " << is_over
                                << " (with L^2 mz finite and det infinite: " << is_over_finite_l2mz << ")");
   CHECK(o3_over > 0);
