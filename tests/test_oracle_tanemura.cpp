@@ -1,11 +1,12 @@
 // Tanemura–Ogawa–Ogita against CGAL (tests/cgal_oracle.hpp): for every exact
 // kernel, the simplex set equals CGAL's Delaunay_triangulation_2/3 (sos
 // policy), and the result passes the exact validator, on inputs where
-// the bucket grid and the tie-breaking both matter: uniform sets large enough
-// for many cells, integer lattices (cocircular / cospherical ties everywhere,
+// the search tree (algorithms/kd_tree.hpp) and the tie-breaking both matter:
+// uniform sets large enough for many leaves, integer lattices (cocircular / cospherical ties everywhere,
 // coplanar hull faces), cube corners, exact cocircular / cospherical sets with
 // points inside, rotated lattices, points on hull edges and faces, clustered
-// sets (very uneven cells), huge and tiny magnitudes. The strict policy must
+// sets and Kettner's grid of consecutive doubles with two far points (very
+// uneven density), huge and tiny magnitudes. The strict policy must
 // give a valid Delaunay triangulation. (test_oracle_properties.cpp also runs
 // tanemura in its random families, through the registry.)
 #include <catch2/catch.hpp>
@@ -106,6 +107,7 @@ TEST_CASE("oracle tanemura: 2D equals CGAL", "[oracle][tanemura]") {
   equals_cgal<2>(gen::huge<2>(300, 7), "huge");
   equals_cgal<2>(gen::tiny<2>(300, 8), "tiny");
   equals_cgal<2>(gen::near_duplicates<2>(300, 9), "near duplicates");
+  equals_cgal<2>(gen::kettner_grid(24), "kettner grid 24x24 + 2");
 }
 
 TEST_CASE("oracle tanemura: 3D equals CGAL", "[oracle][tanemura]") {
