@@ -34,7 +34,19 @@ const char* const kGenHelp =
     "  tiny             random integers in [-2^20, 2^20] times 2^--exp (default -1074: subnormals)\n"
     "  kettner-grid     2D: (0.5 + x 2^-53, 0.5 + y 2^-53), x,y < --side (256), then (12,12), (24,24)\n"
     "                   (Kettner et al. 2008); --n is ignored\n"
-    "  kettner-hull     2D: the incremental-hull failure set --set A1|A2|B1|B2 of Kettner et al. 2008\n";
+    "  kettner-hull     2D: the incremental-hull failure set --set A1|A2|B1|B2 of Kettner et al. 2008\n"
+    "binade edges (exact; --exp E in -1074..1023, seeded when absent; --sign positive|negative|\n"
+    "mixed, default mixed: each axis's sign seeded):\n"
+    "  binade-lattice   a lattice whose every axis is +-2^E + i 2^S, i in [-m/2, m/2): it crosses\n"
+    "                   the binade edge 2^E; --step-exp S in max(E-52,-1074)..E (default: one of\n"
+    "                   the three finest, seeded); S = E-52 steps by one ulp above the edge\n"
+    "  binade-doubles   a lattice whose every axis is the consecutive doubles around +-2^E\n"
+    "                   (spacing 2^(E-53) below the edge, 2^(E-52) above)\n"
+    "  half-integers    N distinct points of a grid whose axes are consecutive multiples of 1/2\n"
+    "                   (that are doubles) around +-2^51, +-2^52, +-2^53 (--exp fixes it) or 0\n"
+    "                   (issue 17: half-integers in [2^51, 2^52) passed an integer test)\n"
+    "  extreme-doubles  N distinct points of a grid whose axes hold the largest finite doubles,\n"
+    "                   the smallest subnormals (both signs) and 0\n";
 
 }  // namespace
 
@@ -43,7 +55,7 @@ int cmd_gen(int argc, char** argv) {
     const Args a = parse_args(argc, argv, 2,
                               {"-o", "--n", "--dim", "--seed", "--off", "--ulps", "--base",
                                "--clusters", "--sigma", "--copies", "--side", "--exp", "--set",
-                               "--lo", "--hi"},
+                               "--lo", "--hi", "--step-exp", "--sign"},
                               {"--decimal", "--hex", "--help"});
     if (a.has("--help")) {
       std::cout << kGenHelp;
@@ -69,6 +81,11 @@ int cmd_gen(int argc, char** argv) {
       o.exp = static_cast<int>(a.i64("--exp", 0, -1074, 1023));
       o.exp_set = true;
     }
+    if (a.get("--step-exp")) {
+      o.step_exp = static_cast<int>(a.i64("--step-exp", 0, -1074, 1023));
+      o.step_exp_set = true;
+    }
+    o.sign = a.get("--sign").value_or(o.sign);
     o.set = a.get("--set").value_or(o.set);
     o.lo = a.real("--lo", o.lo);
     o.hi = a.real("--hi", o.hi);

@@ -1,6 +1,8 @@
 // See generators.hpp for the sources and the exactness arguments.
 #include "fuzz/generators.hpp"
 
+#include "fuzz/binade_edges.hpp"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -66,6 +68,15 @@ std::int64_t ordinal(double x) {
 
 std::int64_t ulp_distance(double a, double b) { return ordinal(b) - ordinal(a); }
 
+std::vector<std::size_t> choose(std::size_t total, std::size_t n, SplitMix64& rng) {
+  std::vector<std::size_t> idx(total);
+  for (std::size_t i = 0; i < total; ++i) idx[i] = i;
+  for (std::size_t i = 0; i < n; ++i) std::swap(idx[i], idx[i + rng.below(total - i)]);
+  idx.resize(n);
+  std::sort(idx.begin(), idx.end());
+  return idx;
+}
+
 // ---- helpers -------------------------------------------------------------
 
 namespace {
@@ -82,16 +93,6 @@ std::int64_t isqrt(std::int64_t m) {  // floor(sqrt(m)) for 0 <= m < 2^62
   while (r * r > m) --r;
   while ((r + 1) * (r + 1) <= m) ++r;
   return r;
-}
-
-// n distinct indices of [0, total), ascending, chosen with a seeded partial shuffle.
-std::vector<std::size_t> choose(std::size_t total, std::size_t n, SplitMix64& rng) {
-  std::vector<std::size_t> idx(total);
-  for (std::size_t i = 0; i < total; ++i) idx[i] = i;
-  for (std::size_t i = 0; i < n; ++i) std::swap(idx[i], idx[i + rng.below(total - i)]);
-  idx.resize(n);
-  std::sort(idx.begin(), idx.end());
-  return idx;
 }
 
 struct Gauss {
@@ -418,10 +419,61 @@ std::vector<Point2> kettner_hull(const std::string& set) {
 std::vector<std::string> generator_names() {
   return {"uniform",   "gaussian",       "clustered",       "lattice", "rotated-lattice",
           "cocircular", "cospherical",   "collinear",       "coplanar", "near-degenerate",
-          "near-duplicates", "huge",     "tiny",            "kettner-grid", "kettner-hull"};
+          "near-duplicates", "huge",     "tiny",            "kettner-grid", "kettner-hull",
+          "binade-lattice", "binade-doubles", "half-integers", "extreme-doubles"};
+}
+
+std::vector<std::string> degenerate_generator_names() {
+  std::vector<std::string> out;
+  for (const auto& g : generator_names())
+    if (g != "uniform" && g != "gaussian" && g != "clustered" && g != "huge" && g != "tiny") out.push_back(g);
+  return out;
+}
+
+bool generator_has_dimension(const std::string& name, int dim) {
+  if (dim == 2) return name != "coplanar";
+  return dim == 3 && name.rfind("kettner", 0) != 0;
 }
 
 namespace {
+
+// The seeded parameters of the binade-edge generators (fuzz/binade_edges.hpp),
+// drawn from their own stream so that they do not shift the points' choice.
+template <int D>
+AxisSigns<D> axis_signs(const GenOptions& o, SplitMix64& rng) {
+  if (o.sign != "positive" && o.sign != "negative" && o.sign != "mixed")
+    throw std::invalid_argument(o.name + ": --sign must be positive, negative or mixed, not '" + o.sign + "'");
+  AxisSigns<D> s;
+  for (int& v : s) v = o.sign == "positive" ? 1 : o.sign == "negative" ? -1 : (rng.below(2) ? 1 : -1);
+  return s;
+}
+
+template <int D>
+std::vector<Point<D>> binade_by_name(const GenOptions& o) {
+  SplitMix64 rng(o.seed ^ 0xb1ade0edULL);
+  if (o.name == "binade-lattice" || o.name == "binade-doubles") {
+    const int exp = o.exp_set ? o.exp : static_cast<int>(rng.between(-1074, 1023));
+    const auto signs = axis_signs<D>(o, rng);
+    if (o.name == "binade-doubles") return binade_doubles<D>(o.n, exp, signs);
+    const int finest = std::max(exp - 52, -1074);
+    const int step = o.step_exp_set ? o.step_exp : std::min(exp, finest + static_cast<int>(rng.below(3)));
+    return binade_lattice<D>(o.n, exp, step, signs);
+  }
+  if (o.name == "half-integers") {
+    if (o.exp_set && (o.exp < 51 || o.exp > 53))
+      throw std::invalid_argument("half-integers: --exp must be 51, 52 or 53");
+    const auto signs = axis_signs<D>(o, rng);
+    std::array<double, D> centres;
+    for (int j = 0; j < D; ++j) {
+      // Axis 0 always at an edge; the others at an edge (2 in 3) or at 0.
+      const bool at_edge = j == 0 || rng.below(3) != 0;
+      const int exp = o.exp_set ? o.exp : 51 + static_cast<int>(rng.below(3));
+      centres[j] = at_edge ? signs[j] * std::ldexp(1.0, exp) : 0.0;
+    }
+    return half_integers<D>(o.n, o.seed, centres);
+  }
+  return extreme_doubles<D>(o.n, o.seed);
+}
 
 template <int D>
 std::vector<Point<D>> by_name(const GenOptions& o, const std::string& name) {
@@ -442,7 +494,8 @@ std::vector<Point<D>> by_name(const GenOptions& o, const std::string& name) {
         base == "gaussian" || base == "clustered" || base == "huge" || base == "tiny")
       throw std::invalid_argument("near-degenerate: --base must be an exact degenerate set "
                                   "(cocircular, cospherical, collinear, coplanar, lattice, "
-                                  "rotated-lattice, kettner-grid, kettner-hull)");
+                                  "rotated-lattice, kettner-grid, kettner-hull, binade-lattice, "
+                                  "binade-doubles, half-integers, extreme-doubles)");
     return perturb_ulps<D>(by_name<D>(o, base), o.ulps, o.seed);
   }
   if (name == "near-duplicates") return near_duplicates<D>(o.n, o.seed, o.copies, o.ulps);
@@ -451,6 +504,12 @@ std::vector<Point<D>> by_name(const GenOptions& o, const std::string& name) {
   if (name == "kettner-grid" || name == "kettner-hull") {
     if constexpr (D == 2) return name == "kettner-grid" ? kettner_grid(o.side) : kettner_hull(o.set);
     throw std::invalid_argument(name + " exists in 2D only");
+  }
+  if (name == "binade-lattice" || name == "binade-doubles" || name == "half-integers" ||
+      name == "extreme-doubles") {
+    GenOptions b = o;
+    b.name = name;
+    return binade_by_name<D>(b);
   }
   std::string all;
   for (const auto& g : generator_names()) all += (all.empty() ? "" : ", ") + g;

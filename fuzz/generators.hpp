@@ -42,6 +42,10 @@ class SplitMix64 {
   std::uint64_t state_;
 };
 
+// n distinct indices of [0, total) (n <= total), ascending, chosen with a
+// seeded partial Fisher-Yates shuffle.
+std::vector<std::size_t> choose(std::size_t total, std::size_t n, SplitMix64& rng);
+
 // x moved by k units in the last place (k < 0: downwards), as k successive
 // std::nextafter steps (|k| <= 2^20); x must be finite.
 double move_ulps(double x, std::int64_t k);
@@ -99,11 +103,24 @@ struct GenOptions {
   bool exp_set = false;
   std::string set = "A1";    // kettner-hull
   double lo = 0, hi = 1;     // uniform box
+  // binade-lattice, binade-doubles, half-integers (fuzz/binade_edges.hpp): the
+  // edge exponent is `exp` when exp_set (else seeded); the lattice step 2^step_exp
+  // when step_exp_set (else seeded among the three finest); the axes' signs.
+  int step_exp = 0;
+  bool step_exp_set = false;
+  std::string sign = "mixed";  // positive | negative | mixed (seeded per axis)
 };
 
 // Throws std::invalid_argument with a readable message for an unknown name,
 // a dimension the generator does not have, or an out-of-range option.
 PointSet generate(const GenOptions& o);
+// Every generator, in `dlab gen --help` order.
 std::vector<std::string> generator_names();
+// The fuzzer's degenerate mix (issue 12 draws from it): the generators whose
+// sets are exactly degenerate, within a few ulps of it, or at the edges of the
+// double format -- all but uniform, gaussian, clustered, huge and tiny.
+std::vector<std::string> degenerate_generator_names();
+// Whether `name` generates points of dimension dim (2 or 3).
+bool generator_has_dimension(const std::string& name, int dim);
 
 }  // namespace dlab::gen
