@@ -21,10 +21,7 @@
 #pragma once
 #include <concepts>
 
-#include <string_view>
-
 #include "predicates/kernel.hpp"
-#include "predicates/mp_kernel.hpp"
 #include "predicates/perturbed.hpp"
 
 namespace dlab {
@@ -80,14 +77,9 @@ bool ghost_conflict(const K& k, const Point3& a, const Point3& b, const Point3& 
                     const Point3& p) {
   const Sign o = orient_pos(k, a, b, c, p);
   if (o != Sign::zero) return o == Sign::positive;
-  if constexpr (HasCoplanarIncircle<K> && K::name == std::string_view("integer")) {
-    // Workaround: the integer kernel's orient2d, which perturbed<K> uses on
-    // the coordinate projections, works on a separately fitted 2D grid that
-    // does not hold 3D-snapped points.  The points are exact doubles already
-    // (snapped), so the mp kernel gives the answer a correct integer kernel
-    // would give.  Rare: only for p exactly coplanar with a hull facet.
-    return perturbed<MpKernel>{}.coplanar_incircle(a, b, c, p) == Sign::positive;
-  } else if constexpr (HasCoplanarIncircle<K>) {
+  if constexpr (HasCoplanarIncircle<K>) {
+    // Exact for every exact K, the integer kernel included (on its 3D grid:
+    // predicates/perturbed.hpp, coplanar_incircle_exact).
     return k.coplanar_incircle(a, b, c, p) == Sign::positive;
   } else {
     // Strict policy: the sphere through a, b, c, d meets the plane abc in the
