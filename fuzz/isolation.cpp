@@ -94,8 +94,17 @@ Child::Child(const Work& work, Span span, bool alone) : span_(span), alone_(alon
     throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   }
   if (pid == 0) {
-    ::close(fds[0]);
-    child_main(work, span, fds[1]);
+    // Keep only the write end, as fd 3: a child holding the read end of a
+    // sibling's pipe would keep that sibling from ever getting EOF / SIGPIPE
+    // after the parent dies, and two such children could block each other.
+    int out = fds[1];
+    if (out != 3) {
+      if (dup2(out, 3) < 0) _exit(1);
+      out = 3;
+    }
+    if (close_range(4, ~0U, 0) != 0)
+      for (int fd = 4; fd < 65536; ++fd) ::close(fd);
+    child_main(work, span, out);
   }
   ::close(fds[1]);
   pid_ = pid;
