@@ -187,6 +187,13 @@ endif()
 dlab_case(gen_triangulate RC 0 ARGS triangulate g1.txt -o g1.tri)
 dlab_case(gen_check RC 0 OUT "valid Delaunay" ARGS check g1.txt g1.tri)
 dlab_case(gen_decimal RC 0 OUT "^0.375 0.5\n" ARGS gen cocircular --n 12 --decimal)
+# Binade-edge generators: exact values, refused parameters (exit 2).
+dlab_case(gen_binade RC 0 OUT "^-0x1.0000000000001p\\+51 -0x1.0000000000001p\\+51\n-0x1p\\+51 "
+          ARGS gen binade-lattice --exp 51 --step-exp -1 --sign negative --n 9)
+dlab_case(gen_binade_help RC 0 OUT "binade-lattice.*binade-doubles.*half-integers.*extreme-doubles" ARGS gen --help)
+dlab_case(gen_binade_sign RC 2 ERR "--sign must be positive, negative or mixed" ARGS gen binade-doubles --sign up)
+dlab_case(gen_binade_step RC 2 ERR "--step-exp must be in -1..51" ARGS gen binade-lattice --exp 51 --step-exp -2)
+dlab_case(gen_binade_overflow RC 2 ERR "overflow" ARGS gen binade-lattice --exp 1023 --step-exp 1023 --n 100)
 # The inexact baselines may fail on the Kettner grid, but only with status 0 or 1.
 dlab_case(gen_kettner RC 0 ARGS gen kettner-grid --side 24 -o kettner.txt)
 foreach(k float epsilon)
