@@ -34,18 +34,14 @@ bool parse_count(const std::string& s, std::uint64_t max, std::uint64_t& out) {
   return true;
 }
 
-// True when generator `name` exists in dimension `dim` (it throws otherwise).
-bool generator_exists(const std::string& name, int dim) {
-  gen::GenOptions o;
-  o.name = name;
-  o.dim = dim;
-  o.n = 8;
-  try {
-    gen::generate(o);
-    return true;
-  } catch (const std::invalid_argument&) {
-    return false;
+// The generators of `names` in dimension `dim`, one of the aliases cocircular / cospherical.
+std::vector<std::string> of_dimension(const std::vector<std::string>& names, int dim) {
+  std::vector<std::string> out;
+  for (const auto& g : names) {
+    if ((dim == 2 && g == "cospherical") || (dim == 3 && g == "cocircular")) continue;
+    if (gen::generator_has_dimension(g, dim)) out.push_back(g);
   }
+  return out;
 }
 
 }  // namespace
@@ -147,15 +143,7 @@ double parse_duration(const std::string& option, const std::string& value) {
   return static_cast<double>(v) * unit;
 }
 
-std::vector<std::string> default_mix(int dim) {
-  std::vector<std::string> out;
-  for (const auto& g : gen::generator_names()) {
-    // Aliases: cocircular and cospherical are one generator.
-    if ((dim == 2 && g == "cospherical") || (dim == 3 && g == "cocircular")) continue;
-    if (generator_exists(g, dim)) out.push_back(g);
-  }
-  return out;
-}
+std::vector<std::string> default_mix(int dim) { return of_dimension(gen::generator_names(), dim); }
 
 void check_and_expand(CampaignSpec& spec) {
   if (spec.dim != 2 && spec.dim != 3) throw UsageError("--dim must be 2 or 3");
@@ -164,14 +152,15 @@ void check_and_expand(CampaignSpec& spec) {
   spec.pairs();  // throws for an unknown name
   std::vector<std::string> gens;
   for (const auto& g : spec.generators) {
-    if (g == "mix") {
-      for (const auto& m : default_mix(spec.dim))
+    if (g == "mix" || g == "degenerate") {
+      for (const auto& m : g == "mix" ? default_mix(spec.dim) : of_dimension(gen::degenerate_generator_names(), spec.dim))
         if (!contains(gens, m)) gens.push_back(m);
       continue;
     }
     if (!contains(gen::generator_names(), g))
-      throw UsageError("--gen: unknown generator '" + g + "' (known: mix, " + join(gen::generator_names()) + ")");
-    if (!generator_exists(g, spec.dim))
+      throw UsageError("--gen: unknown generator '" + g + "' (known: mix, degenerate, " + join(gen::generator_names()) +
+                       ")");
+    if (!gen::generator_has_dimension(g, spec.dim))
       throw UsageError("--gen: generator '" + g + "' does not exist in " + std::to_string(spec.dim) + "D");
     if (!contains(gens, g)) gens.push_back(g);
   }

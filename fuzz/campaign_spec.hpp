@@ -60,7 +60,8 @@ void parse_shard(const std::string& value, std::uint64_t& k, std::uint64_t& n);
 // "90", "90s", "15m", "2h" -> seconds (> 0).
 double parse_duration(const std::string& option, const std::string& value);
 // Checks every name of the spec: algorithms, kernels, generators (each must
-// exist in spec.dim; "mix" expands to the fuzzer's default mix).
+// exist in spec.dim; "mix" expands to every generator of the dimension,
+// "degenerate" to gen::degenerate_generator_names() of the dimension).
 void check_and_expand(CampaignSpec& spec);
 // The generators of the default mix in dimension `dim`.
 std::vector<std::string> default_mix(int dim);

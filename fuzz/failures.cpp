@@ -37,7 +37,7 @@ std::string Signature::file_stem() const {
     for (unsigned char c : kind) h = (h ^ c) * 16777619u;
     char hex[9];
     std::snprintf(hex, sizeof hex, "%08x", h);
-    s += "." + clean(kind, 40) + "-" + hex;
+    s.append(".").append(clean(kind, 40)).append("-").append(hex);
   }
   return s;
 }

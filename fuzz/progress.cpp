@@ -35,9 +35,9 @@ void Progress::update(std::uint64_t done, std::uint64_t failures) {
     left = clock_text(std::chrono::duration<double>(*deadline_ - now).count());
   else if (total_ && rate > 0)
     left = clock_text(static_cast<double>(*total_ - std::min(done, *total_)) / rate);
+  const std::string of = total_ ? std::string("/").append(std::to_string(*total_)) : std::string();
   std::fprintf(stderr, "\r\033[Kdlab fuzz: %llu%s cases, %.0f cases/s, %llu failures, %s left",
-               static_cast<unsigned long long>(done),
-               total_ ? ("/" + std::to_string(*total_)).c_str() : "", rate,
+               static_cast<unsigned long long>(done), of.c_str(), rate,
                static_cast<unsigned long long>(failures), left.c_str());
   std::fflush(stderr);
   drawn_ = true;

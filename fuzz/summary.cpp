@@ -68,7 +68,7 @@ std::string Summary::table() const {
             classes += (classes.empty() ? "" : ", ") + std::string(c) + " " + std::to_string(f->second);
         cells.push_back({a, k, g, std::to_string(row.runs), std::to_string(row.failures),
                          percent(static_cast<double>(row.failures) / static_cast<double>(row.runs)),
-                         "[" + percent(ci.lo) + ", " + percent(ci.hi) + "]", classes.empty() ? "-" : classes});
+                         std::string("[").append(percent(ci.lo)).append(", ").append(percent(ci.hi)).append("]"), classes.empty() ? "-" : classes});
       }
   std::vector<std::size_t> width(cells[0].size(), 0);
   for (const auto& row : cells)
