@@ -82,6 +82,11 @@ void check_exp(int exp, const char* what) {
 
 }  // namespace
 
+const std::vector<int>& notable_edges() {
+  static const std::vector<int> e{-1074, -1073, -1023, -1022, -1021, -1, 0, 1, 50, 51, 52, 53, 54, 1022, 1023};
+  return e;
+}
+
 template <int D>
 std::vector<Point<D>> binade_lattice(std::size_t n, int exp, int step, const AxisSigns<D>& signs) {
   check_exp(exp, "binade-lattice");

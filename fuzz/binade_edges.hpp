@@ -24,6 +24,12 @@
 
 namespace dlab::gen {
 
+// Edges worth hitting often: the smallest subnormals, the subnormal/normal
+// boundary 2^-1022, around 1, the small-integer certificates' 2^50..2^54
+// (predicates/small_integer.hpp), the top of the range. Seeded generators draw
+// half their edges from here, half uniformly from -1074..1023.
+const std::vector<int>& notable_edges();
+
 // signs[j] = +1 or -1: axis j sits at signs[j] 2^exp.
 template <int D>
 using AxisSigns = std::array<int, D>;

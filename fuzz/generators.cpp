@@ -452,7 +452,10 @@ template <int D>
 std::vector<Point<D>> binade_by_name(const GenOptions& o) {
   SplitMix64 rng(o.seed ^ 0xb1ade0edULL);
   if (o.name == "binade-lattice" || o.name == "binade-doubles") {
-    const int exp = o.exp_set ? o.exp : static_cast<int>(rng.between(-1074, 1023));
+    const auto& notable = notable_edges();
+    const int exp = o.exp_set            ? o.exp
+                    : rng.below(2) != 0 ? notable[rng.below(notable.size())]
+                                        : static_cast<int>(rng.between(-1074, 1023));
     const auto signs = axis_signs<D>(o, rng);
     if (o.name == "binade-doubles") return binade_doubles<D>(o.n, exp, signs);
     const int finest = std::max(exp - 52, -1074);

@@ -58,8 +58,13 @@ std::vector<double> axis_values(const std::vector<Point<D>>& pts, int j) {
   return {s.begin(), s.end()};
 }
 
-const int kEdges[] = {-1074, -1073, -1060, -1023, -1022, -1021, -1020, -600, -1, 0,  1,
-                      50,    51,    52,    53,    54,    500,   1021,  1022, 1023};
+// The notable edges and a few more.
+std::vector<int> edges() {
+  std::vector<int> e = notable_edges();
+  for (int x : {-1060, -1020, -600, 500, 1021}) e.push_back(x);
+  return e;
+}
+const std::vector<int> kEdges = edges();
 
 }  // namespace
 
@@ -251,8 +256,10 @@ TEST_CASE("binade generators by name: seeded parameters, options, the fuzzer's m
   CHECK(a.p3 == binade_lattice<3>(30, 51, -1, AxisSigns<3>{-1, -1, -1}));
   o.sign = "sideways";
   CHECK_THROWS_AS(generate(o), std::invalid_argument);
-  // Unset parameters are seeded: across seeds the edge moves and is always valid.
+  // Unset parameters are seeded: across seeds the edge moves, is always a power
+  // of two, and is a notable edge about half the time.
   std::set<double> edges;
+  int notable = 0;
   for (std::uint64_t seed = 0; seed < 40; ++seed) {
     GenOptions g;
     g.name = "binade-doubles";
@@ -260,10 +267,15 @@ TEST_CASE("binade generators by name: seeded parameters, options, the fuzzer's m
     g.seed = seed;
     const PointSet ps = generate(g);
     REQUIRE(ps.size() == 9);
-    edges.insert(std::fabs(ps.p2[4][0]));  // index 4 = (1,1): the edge on both axes
-    CHECK(std::fabs(ps.p2[4][0]) == std::exp2(std::ilogb(ps.p2[4][0])));
+    const double edge = std::fabs(ps.p2[4][0]);  // index 4 = (1,1): the edge on both axes
+    const int e = std::ilogb(edge);
+    CHECK(edge == std::ldexp(1.0, e));
+    edges.insert(edge);
+    notable += std::find(notable_edges().begin(), notable_edges().end(), e) != notable_edges().end();
   }
-  CHECK(edges.size() > 30);
+  CHECK(notable >= 10);
+  CHECK(notable <= 30);
+  CHECK(edges.size() >= 20);
   GenOptions hi;
   hi.name = "half-integers";
   hi.exp = 50, hi.exp_set = true;

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "algorithms/validate.hpp"
+#include "fuzz/binade_edges.hpp"
 #include "fuzz/generators.hpp"
 #include "tests/run_readout.hpp"
 #include "variants/run.hpp"
@@ -144,9 +145,7 @@ std::size_t max_n(int dim) {
   return dim == 2 ? 30 : 20;
 }
 
-// Binade edges worth hitting often: the subnormal ones, the normal/subnormal
-// boundary, around 1, the small-integer certificates' 2^51..2^53, the top.
-const std::vector<int> kEdges = {-1074, -1073, -1023, -1022, -1021, -1, 0, 1, 50, 51, 52, 53, 54, 1022, 1023};
+const std::vector<int>& kEdges = gen::notable_edges();
 
 rc::Gen<Case> binade_case(int dim) {
   return rc::gen::exec([dim] {
