@@ -27,7 +27,7 @@ Outcome compare(Outcome o, const RunResult& r, const RunResult& ref) {
   o.kind = OutcomeClass::differs;
   o.count = extra.size();
   o.detail = std::to_string(extra.size()) + " of " + std::to_string(mine.size()) +
-             " simplices not in the perturbed reference (mp Bowyer-Watson, sos: " +
+             " simplices not in the perturbed reference (Bowyer-Watson, sos, exact: " +
              std::to_string(theirs.size()) + " simplices)";
   if (!extra.empty()) o.detail += " (first: " + simplex_text<D>(extra.front()) + ")";
   return o;
@@ -36,14 +36,7 @@ Outcome compare(Outcome o, const RunResult& r, const RunResult& ref) {
 }  // namespace
 
 const RunResult& Reference::result() {
-  if (!result_) {
-    RunOptions o;
-    o.algorithm = "bowyer-watson";
-    o.kernel = "mp";
-    o.policy = "sos";
-    o.order = "brio";
-    result_ = run(*points_, o);
-  }
+  if (!result_) result_ = run_reference(*points_);
   return *result_;
 }
 

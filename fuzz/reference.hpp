@@ -1,9 +1,11 @@
 // The reference an exact pair's result must equal: the symbolically perturbed
-// Delaunay triangulation (design.md section 2), computed by Bowyer-Watson with
-// the mp kernel under the sos policy -- simplex for simplex CGAL's
-// Delaunay_triangulation_2/3 (tests/test_oracle_properties.cpp checks this).
-// It is independent of every fast kernel under test (adaptive, integer): GMP
-// evaluates every predicate.
+// Delaunay triangulation (design.md section 2), computed by Bowyer-Watson under
+// the sos policy with the exact validator's kernel, a floating filter in front
+// of GMP (fuzz/reference_kernel.cpp). Bowyer-Watson with the mp kernel is
+// simplex for simplex CGAL's Delaunay_triangulation_2/3
+// (tests/test_oracle_properties.cpp), and this one equals it
+// (tests/test_fuzz_campaign.cpp). It is independent of the fast kernels under
+// test (adaptive, integer): none of their code runs.
 #pragma once
 #include <optional>
 
@@ -11,6 +13,9 @@
 #include "variants/run.hpp"
 
 namespace dlab::fuzz {
+
+// Bowyer-Watson, sos, filtered<FloatFilter, MpKernel> (fuzz/reference_kernel.cpp).
+RunResult run_reference(const PointSet& points);
 
 class Reference {
  public:

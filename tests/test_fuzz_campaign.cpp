@@ -199,6 +199,29 @@ TEST_CASE("fuzz: a valid Delaunay result without cospherical facets is the pertu
   CHECK(differing > 0);
 }
 
+TEST_CASE("fuzz: the reference equals Bowyer-Watson x mp under sos (the CGAL-identical one)", "[fuzz]") {
+  int degenerate = 0;
+  for (int dim : {2, 3})
+    for (const char* g : {"lattice", "cocircular", "near-degenerate", "near-duplicates", "collinear",
+                          "rotated-lattice", "half-integers", "tiny", "huge"})
+      for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        gen::GenOptions o;
+        o.name = g;
+        o.dim = dim;
+        o.n = 6 + seed * 4;
+        o.seed = seed;
+        const PointSet pts = gen::generate(o);
+        RunOptions mp;
+        mp.kernel = "mp";
+        const RunResult a = run_reference(pts), b = run(pts, mp);
+        INFO(g << " dim " << dim << " seed " << seed);
+        CHECK(a.outcome == b.outcome);
+        CHECK((dim == 2 ? same_triangulation<2>(a, b) : same_triangulation<3>(a, b)));
+        if (a.outcome == RunResult::Outcome::ok && validate(pts, a.simplices).cospherical_facets > 0) ++degenerate;
+      }
+  CHECK(degenerate > 30);  // the perturbation decided something
+}
+
 TEST_CASE("fuzz: resume scans whole cases and drops a torn or incomplete last one", "[fuzz]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("dlab_fuzz_scan_" + std::to_string(::getpid()));
