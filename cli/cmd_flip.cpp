@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "algorithms/validate.hpp"
 #include "cli/args.hpp"
@@ -72,7 +73,20 @@ void write_out(const std::optional<std::string>& path, const std::vector<std::ui
 
 }  // namespace
 
+const char* const kFlipUsage =
+    "usage: dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]\n"
+    "       dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]\n"
+    "Flips SIMPLICES toward the Delaunay triangulation of INPUT (Lawson in 2D, Joe's flips in 3D,\n"
+    "which may get stuck: not-delaunay). SIMPLICES must triangulate INPUT -- checked by the exact\n"
+    "validator; otherwise exit 2 naming the file, line and check. K: adaptive (default), integer,\n"
+    "mp, float, epsilon. --make-start writes a valid, non-Delaunay start (K random flips).\n";
+
 int cmd_flip(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--help") {
+      std::cout << kFlipUsage << kOutcomeHelp;
+      return 0;
+    }
   RunOptions opt;
   opt.algorithm = "flip";
   opt.order = "input";

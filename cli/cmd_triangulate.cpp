@@ -12,8 +12,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string_view>
 
-#include "variants/outcome.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
@@ -22,6 +22,7 @@
 #include "cli/point_writer.hpp"
 #include "cli/simplex_io.hpp"
 #include "cli/stats_json.hpp"
+#include "variants/outcome.hpp"
 
 namespace dlab::cli {
 namespace {
@@ -50,11 +51,26 @@ class Output {
 
 }  // namespace
 
+const char* const kTriangulateUsage =
+    "usage: dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
+    "         [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]\n"
+    "         [--stats FILE.json] [--validate] [--exact-sphere] [--enclosing-box]\n"
+    "A: bowyer-watson (default), lawson, tanemura, george (--exact-sphere: exact circumsphere test\n"
+    "instead of George's floating one; --enclosing-box: the paper's box instead of a ghost vertex).\n"
+    "K: adaptive (default), integer, mp (exact); float, epsilon (inexact baselines).\n"
+    "--validate: the exact validator judges the result of an exact pair too (it may take longer\n"
+    "than the triangulation; not counted in seconds or peak_rss_bytes).\n";
+
 int cmd_triangulate(int argc, char** argv) {
   RunOptions opt;
   Args a;
   PointSet points;
   std::unique_ptr<Output> simplex_out, points_out, stats_out;
+  for (int i = 2; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--help") {
+      std::cout << kTriangulateUsage << kOutcomeHelp;
+      return 0;
+    }
   try {
     a = parse_args(argc, argv, 2,
                    {"-o", "--algo", "--kernel", "--policy", "--order", "--seed", "--points-out",

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "cli/commands.hpp"
+#include "cli/outcome_report.hpp"
 
 namespace {
 
@@ -13,12 +14,13 @@ const char* const kUsage =
     "usage:\n"
     "  dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
     "                   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]\n"
-    "                   [--stats FILE.json]\n"
+    "                   [--stats FILE.json] [--validate]\n"
     "  dlab check INPUT SIMPLICES [--orientation positive|any]\n"
     "                                   exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
     "  dlab predicate NAME K COORD...   NAME: orient2d incircle orient3d insphere; prints -1, 0 or 1\n"
     "  dlab gen GENERATOR [--decimal] [options]  a point set (dlab gen --help lists generators)\n"
-    "  dlab flip INPUT SIMPLICES [-o OUT]  flip a triangulation toward Delaunay (exit 1 if stuck)\n"
+    "  dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]\n"
+    "                                   flip a triangulation of INPUT toward Delaunay\n"
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
     "  dlab fuzz --out DIR (--cases C | --budget T) [--algo LIST] [--kernel LIST] [--gen LIST]\n"
@@ -33,7 +35,7 @@ const char* const kUsage =
     "i.e. Shewchuk's orient2d(v0,v1,v2) > 0 in 2D (counterclockwise) and orient3d(v0,v1,v2,v3) < 0\n"
     "in 3D (CGAL's cells); --orientation any also takes the opposite (scipy's are mixed).\n"
     "--decimal: coordinates as shortest round-trip decimals (numpy.loadtxt) instead of hex floats.\n"
-    "Exit status: 0 success, 1 the algorithm failed or its result is invalid, 2 bad input or usage.\n";
+    "Exit status: 0 success, 1 any other outcome, 2 bad input or usage (dlab COMMAND --help).\n";
 
 }  // namespace
 
@@ -54,7 +56,7 @@ int main(int argc, char** argv) {
     if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
     if (cmd == "--version" || cmd == "version") return dlab::cli::cmd_version(argc, argv);
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
-      std::cout << kUsage;
+      std::cout << kUsage << dlab::cli::kOutcomeHelp;
       return 0;
     }
   } catch (const std::exception& e) {  // each command reports its own errors; this is a backstop

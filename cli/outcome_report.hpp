@@ -15,4 +15,8 @@ void announce_snapping(std::string_view command, const RunResult& r);
 // The outcome's one stderr line (variants/outcome.hpp); nothing for ok.
 void print_outcome(std::string_view command, const Outcome& o, std::string_view pair);
 
+// The table class -> exit status -> stderr line, for `dlab --help`,
+// `dlab triangulate --help` and `dlab flip --help` (README.md has the same).
+extern const char* const kOutcomeHelp;
+
 }  // namespace dlab::cli

@@ -42,7 +42,7 @@
 namespace dlab {
 
 // What snapping did to a point set. Displacement is Euclidean, in input units
-// (IntegerGrid::displacement: within 2 ulps, subnormal moves included).
+// (IntegerGrid::displacement: within 1 ulp in 2D, 3 in 3D, subnormal moves included).
 struct SnapStats {
   std::size_t points = 0;
   std::size_t moved = 0;   // points with at least one coordinate changed
@@ -169,9 +169,11 @@ class IntegerGrid {
   // difference is a multiple of 2^k (h is one) of magnitude <= h/2 < 2^(k+53),
   // a double. std::hypot neither underflows nor overflows in its squares, so a
   // subnormal snapped to zero moves by its own value, not by sqrt(0) from an
-  // underflowed square. glibc's two-argument hypot is within 1 ulp; 3D nests
-  // two of them (libstdc++'s three-argument hypot was measured 1.05 ulps off),
-  // so the result is within 2 ulps (tests/test_integer_kernel.cpp).
+  // underflowed square. glibc's two-argument hypot is within 1 ulp (its
+  // libm-test-ulps); 3D nests two: the inner error, at most 2^-52 relative,
+  // moves the outer result by less than 2^-52 r < 2 ulp(r), and the outer
+  // rounding adds 1 ulp, so 3D is within 3 ulps (libstdc++'s three-argument
+  // hypot has no documented bound). Tested in tests/test_integer_kernel.cpp.
   static double displacement(const Point<D>& p, const Point<D>& s) {
     if constexpr (D == 2)
       return std::hypot(s[0] - p[0], s[1] - p[1]);

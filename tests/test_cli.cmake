@@ -453,6 +453,12 @@ function(expect_json name path regex)
 endfunction()
 set(pair_re "\\(([a-z-]+( --[a-z-]+)*), (adaptive|integer|mp|float|epsilon) kernel\\)")
 
+# The table is in every --help.
+set(table_re "ok +0  nothing\n  lower-dimensional +0 .*not-delaunay +1 .*invalid +1 .*reported +1 .*bad input or usage 2")
+dlab_case(outcome_help RC 0 OUT "${table_re}" ARGS --help)
+dlab_case(outcome_help_triangulate RC 0 OUT "^usage: dlab triangulate.*--validate.*${table_re}" ARGS triangulate --help)
+dlab_case(outcome_help_flip RC 0 OUT "^usage: dlab flip.*--kernel K.*${table_re}" ARGS flip --help)
+
 # ok: nothing on stderr, outcome ok; --validate makes the validator judge an exact pair too.
 dlab_case(outcome_ok RC 0 ERR "^$" ARGS triangulate square.txt -o /dev/null --stats oc_ok.json)
 expect_json(outcome_ok_stats "${WORK}/oc_ok.json" "\"inserted_points\": 5,.*\"outcome\": \"ok\",\n  \"validated\": false,")
@@ -517,6 +523,10 @@ file(WRITE "${WORK}/snap.txt" "0 0\n1 1\n0x1p-1074 0\n1 0\n")
 dlab_case(outcome_snapped RC 0 ERR "^dlab triangulate: snapped: 1 of 4 points moved to the integer kernel's grid, 1 merged, largest displacement 5e-324\n$"
           ARGS triangulate snap.txt --kernel integer -o snap.tri --points-out snap_pts.txt --stats oc_snap.json)
 expect_json(outcome_snapped_stats "${WORK}/oc_snap.json" "\"distinct_points\": 3,.*\"points_moved\": 1,\n    \"points_merged\": 1,\n    \"max_displacement\": 5e-324\n.*\"outcome\": \"ok\",")
+# Moved without merging: (2^-1074, 1/2) -> (0, 1/2).
+file(WRITE "${WORK}/snap_moved.txt" "0 0\n1 1\n0x1p-1074 0x1p-1\n1 0\n")
+dlab_case(outcome_snapped_moved RC 0 ERR "^dlab triangulate: snapped: 1 of 4 points moved to the integer kernel's grid, 0 merged, largest displacement 5e-324\n$"
+          ARGS triangulate snap_moved.txt --kernel integer -o /dev/null)
 dlab_case(outcome_snapped_none RC 0 ERR "^$" ARGS triangulate square.txt --kernel integer -o /dev/null)
 
 # flip checks what it is given: one tetrahedron over 500 points is not a
@@ -542,11 +552,21 @@ file(WRITE "${WORK}/empty.tri" "# no simplex\n")
 dlab_case(flip_lower RC 0 OUT "^$" ERR "^dlab flip: lower-dimensional: [^\n]* \\(flip, adaptive kernel\\)\n$" ARGS flip collinear.txt empty.tri)
 dlab_case(flip_empty RC 2 ERR "^dlab flip: empty.tri: not a triangulation of kite.txt: missing-point: 4 distinct points" ARGS flip kite.txt empty.tri)
 # --kernel and --stats like triangulate: every kernel flips the kite's long
-# diagonal to the short one (checked above for adaptive); unknown kernels are usage errors.
+# diagonal to the short one (checked above for adaptive), and the predicate
+# counters show which kernel answered (its stages; none for float and epsilon);
+# unknown kernels are usage errors.
+set(flip_stage_adaptive "orient2d.A")
+set(flip_stage_integer "orient2d.integer")
+set(flip_stage_mp "orient2d.mp")
 foreach(k adaptive integer mp float epsilon)
   dlab_case(flip_kernel_${k} RC 0 ERR "^$" ARGS flip kite.txt kite_bad.txt --kernel ${k} -o kite_flip_${k}.tri --stats flip_${k}.json)
   dlab_case(flip_kernel_${k}_check RC 0 OUT "valid Delaunay" ARGS check kite.txt kite_flip_${k}.tri)
-  expect_json(flip_kernel_${k}_stats "${WORK}/flip_${k}.json" "\"algorithm\": \"flip\",\n  \"kernel\": \"${k}\",.*\"predicates\": \\{\n    \"orient2d\": [1-9].*\"flips_total\": 1,.*\"outcome\": \"ok\",")
+  if(DEFINED flip_stage_${k})
+    set(stage_re "\"${flip_stage_${k}}\": [1-9]")
+  else()
+    set(stage_re "\"orient2d\": [1-9][0-9]*,\n    \"incircle\"")
+  endif()
+  expect_json(flip_kernel_${k}_stats "${WORK}/flip_${k}.json" "\"algorithm\": \"flip\",\n  \"kernel\": \"${k}\",.*\"predicates\": \\{\n.*${stage_re}.*\"flips_total\": 1,.*\"outcome\": \"ok\",")
 endforeach()
 dlab_case(flip_kernel_unknown RC 2 ERR "unknown kernel 'quad'" ARGS flip kite.txt kite_bad.txt --kernel quad)
 dlab_case(flip_stats_unwritable RC 2 ERR "cannot write '${WORK}/no/such/dir/f.json'" ARGS flip kite.txt kite_bad.txt --stats "${WORK}/no/such/dir/f.json")

@@ -370,9 +370,9 @@ void check_stats(std::vector<Point<D>> pts) {
   CHECK(st.points == pts.size());
   CHECK(st.moved == moved);
   CHECK(st.merged == brute_distinct<D>(before) - brute_distinct<D>(pts));
-  // integer_grid.hpp: 2D within 1 ulp, 3D within 2 ulps.
+  // integer_grid.hpp: 2D within 1 ulp, 3D within 3 ulps.
   INFO("max_displacement " << std::hexfloat << st.max_displacement);
-  CHECK(within_ulps_of_sqrt(st.max_displacement, max2, D == 2 ? 1 : 2));
+  CHECK(within_ulps_of_sqrt(st.max_displacement, max2, D == 2 ? 1 : 3));
   CHECK((st.max_displacement > 0) == (moved > 0));
 }
 
