@@ -110,10 +110,13 @@ int run_campaign(const CampaignOptions& o, std::ostream& out, std::ostream& err)
           failures += c.failures;
         },
         [&] { progress.update(done, failures); });
-  } catch (const std::runtime_error& e) {
+  } catch (const UsageError&) {
     ::close(fd);
     progress.finish();
-    if (dynamic_cast<const UsageError*>(&e)) throw;
+    throw;
+  } catch (const std::exception& e) {  // a generator that refused a case, a broken child
+    ::close(fd);
+    progress.finish();
     throw UsageError(e.what());
   }
   ::close(fd);

@@ -4,7 +4,9 @@
 // results.jsonl in case order (case i is in shard 1 + i mod n, so the merge
 // takes groups round robin), summary.txt and failures/. With --no-timing
 // (every record's seconds 0) the merged directory is byte-identical to the
-// unsharded one; otherwise only the seconds differ.
+// unsharded one; otherwise only the seconds differ. Shards of a --budget
+// campaign ran different numbers of cases: their merge is the union, in case
+// order, with gaps where a shard stopped earlier (it cannot be resumed).
 #pragma once
 #include <ostream>
 #include <string>
