@@ -604,6 +604,7 @@ std::array<Point3, 5> is_points(double r, double h, double xi, bool flip) {
   return p;
 }
 
+// offset 99: xi = r / 2, no tuning (for bounds that are +inf).
 std::string check_is(double r, double h, int offset, bool flip, EdgeHits& hits) {
   auto key = [&](double xi) {
     const auto p = is_points(r, h, xi, false);
@@ -612,8 +613,9 @@ std::string check_is(double r, double h, int offset, bool flip, EdgeHits& hits) 
     return ord(std::fabs(f.det)) - ord(f.bound) - offset;
   };
   // det / bound grows while dlift is not the largest lift (then L' grows with xi^2).
-  const double xi = first_at_least(std::numeric_limits<double>::denorm_min(),
-                                   std::max({std::fabs(r), std::fabs(h), adaptive::is_lo}), key);
+  const double xi = offset == 99 ? r / 2
+                                 : first_at_least(std::numeric_limits<double>::denorm_min(),
+                                                  std::max({std::fabs(r), std::fabs(h), adaptive::is_lo}), key);
   const auto p = is_points(r, h, xi, flip);
   const DetBound f = is_filter_doc(p[0], p[1], p[2], p[3], p[4]);
   const AdaptiveKernel ak;
@@ -651,6 +653,11 @@ TEST_CASE("insphere lift filter: exact at one ulp around its bound, in every bin
         EDGE_CHECK_CATCH(check_is(std::ldexp(m, e - 2), std::ldexp(m, e), offset, (e & 1) != 0,
                                   floor_both));
       }
+  // The overflow factor (3.2): L'^2 between 2^1016 and 2^1019, mz' small, det finite and
+  // large. (128 L') L' overflows from L'^2 = 2^1017 on and the filter must not answer.
+  for (int i = 0; i < 40; ++i)
+    for (double h : {0x1p-190, 0x1p-60, 1.0, 8.0})
+      EDGE_CHECK_CATCH(check_is(std::ldexp(1 + i / 40.0, 253), h, 99, (i & 1) != 0, hits));
   INFO("one ulp below / at / above: " << show(hits) << "; mz below its floor: " << show(floor_mz)
                                       << "; L and mz below theirs: " << show(floor_both));
   CHECK(hits.all());
