@@ -175,14 +175,7 @@ int cmd_flip(int argc, char** argv) {
   try {
     write_out(a.get("-o"), res.simplices, points.dimension);
     if (stats) {
-      io::StatsRecord rec;
-      rec.options = opt;
-      rec.input_points = points.size();
-      rec.result = &res;
-      rec.outcome = std::string(outcome_name(outcome.kind));
-      rec.message = outcome.kind == OutcomeClass::ok ? res.message : outcome.detail;
-      rec.validated = outcome.validated;
-      rec.peak_rss_bytes = peak_rss;
+      const io::StatsRecord rec = stats_record(opt, points.size(), res, outcome, peak_rss);
       io::write_stats_json(*stats, rec);
       if (!stats->flush()) throw UsageError("error writing '" + *a.get("--stats") + "'");
     }

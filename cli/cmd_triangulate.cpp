@@ -128,14 +128,7 @@ int cmd_triangulate(int argc, char** argv) {
     const auto format = a.has("--decimal") ? io::FloatFormat::decimal : io::FloatFormat::hex;
     if (points_out) points_out->write([&](std::ostream& out) { io::write_points(out, res.points, format); });
     if (stats_out) {
-      io::StatsRecord rec;
-      rec.options = opt;
-      rec.input_points = points.size();
-      rec.result = &res;
-      rec.outcome = std::string(outcome_name(outcome.kind));
-      rec.message = outcome.kind == OutcomeClass::ok ? res.message : outcome.detail;
-      rec.validated = outcome.validated;
-      rec.peak_rss_bytes = peak_rss;
+      const io::StatsRecord rec = stats_record(opt, points.size(), res, outcome, peak_rss);
       stats_out->write([&](std::ostream& out) { io::write_stats_json(out, rec); });
     }
   } catch (const UsageError& e) {

@@ -40,4 +40,17 @@ const char* const kOutcomeHelp =
     "moves: 'dlab CMD: snapped: M of N points moved to the integer kernel's grid, K merged,\n"
     "largest displacement X' (exit status unchanged).\n";
 
+io::StatsRecord stats_record(const RunOptions& options, std::size_t input_points,
+                             const RunResult& result, const Outcome& o, std::uint64_t peak_rss) {
+  io::StatsRecord rec;
+  rec.options = options;
+  rec.input_points = input_points;
+  rec.result = &result;
+  rec.outcome = std::string(outcome_name(o.kind));
+  rec.message = o.kind == OutcomeClass::ok ? result.message : o.detail;
+  rec.validated = o.validated;
+  rec.peak_rss_bytes = peak_rss;
+  return rec;
+}
+
 }  // namespace dlab::cli
