@@ -57,7 +57,7 @@ RunOptions Pair::options(std::uint64_t order_seed) const {
   RunOptions o;
   o.algorithm = algorithm;
   o.kernel = kernel;
-  o.policy = kernel_is_exact(kernel) ? "sos" : "strict";
+  o.policy = kernel_is_exact(kernel) && !unperturbed ? "sos" : "strict";
   o.order = "brio";
   o.seed = order_seed;
   o.exact_sphere = exact_sphere;

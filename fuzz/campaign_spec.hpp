@@ -20,6 +20,7 @@ struct Pair {
   std::string kernel;
   bool exact_sphere = false;
   bool enclosing_box = false;
+  bool unperturbed = false;  // test only (fuzz/selftest.hpp): the strict policy even for an exact kernel
 
   std::string algo_name() const;  // "bowyer-watson", "george+exact-sphere", ...
   // dlab triangulate's defaults: sos for exact kernels, strict for the others; brio order.

@@ -35,23 +35,27 @@ void write_all(int fd, const std::string& s) {
   const std::uint64_t P = w.pairs.size();
   std::optional<PreparedCase> c;
   std::optional<CaseRunner> runner;
+  std::optional<std::uint64_t> loaded;  // j of c
   std::string line;
   for (std::uint64_t f = span.begin; f < span.end; ++f) {
     const std::uint64_t j = f / P;
     const Pair& pair = w.pairs[f % P];
-    if (!c || c->plan.index != w.spec.case_index(j)) {
+    if (loaded != j) {
       runner.reset();
       try {
-        c = prepare_case(w.spec, w.spec.case_index(j));
+        c = w.prepared(j);
       } catch (const std::exception& e) {
         write_all(fd, "E " + std::to_string(f) + " " + e.what() + "\n");
         _exit(kGenerationExit);
       }
+      loaded = j;
       runner.emplace(*c);
     }
     limit_cpu_for_next(w.limits.cpu_seconds);
     maybe_misbehave(w.selftest, c->plan.index, pair.kernel);
-    const PairRecord r = runner->run(pair, w.timing);
+    const PairRecord r = runs_unperturbed(w.selftest, c->plan.index, pair.kernel)
+                             ? runner->run(unperturbed(pair), w.timing)
+                             : runner->run(pair, w.timing);
     line = std::to_string(f) + ' ' + r.outcome + ' ' + (r.exact ? '1' : '0') + '\t' + to_json_line(r) + '\n';
     write_all(fd, line);
   }
@@ -83,6 +87,10 @@ std::string format_seconds(double s) {
 }
 
 }  // namespace
+
+PreparedCase Work::prepared(std::uint64_t j) const {
+  return cases.empty() ? prepare_case(spec, spec.case_index(j)) : cases.at(j);
+}
 
 Child::Child(const Work& work, Span span, bool alone) : span_(span), alone_(alone), next_(span.begin) {
   int fds[2];

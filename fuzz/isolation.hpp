@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "fuzz/campaign_spec.hpp"
+#include "fuzz/case_runner.hpp"
 #include "fuzz/selftest.hpp"
 
 namespace dlab::fuzz {
@@ -34,10 +35,15 @@ struct Limits {
 // What every child needs to know.
 struct Work {
   CampaignSpec spec;
+  std::vector<PreparedCase> cases;  // the corpus's cases (fuzz/corpus_run.hpp); empty for a campaign
   std::vector<Pair> pairs;
   std::vector<Misbehaviour> selftest;
   Limits limits;
   bool timing = true;
+
+  // The j-th case: cases[j] when the work lists its cases, else the
+  // campaign's case spec.case_index(j), generated.
+  PreparedCase prepared(std::uint64_t j) const;
 };
 
 struct Span {

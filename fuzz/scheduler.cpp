@@ -32,7 +32,7 @@ struct Pending {
 // The record of a case x pair whose child died running it alone.
 std::string death_record(const Work& w, std::uint64_t flat, const Death& d, double seconds) {
   const std::uint64_t P = w.pairs.size();
-  const PreparedCase c = prepare_case(w.spec, w.spec.case_index(flat / P));
+  const PreparedCase c = w.prepared(flat / P);
   PairRecord r = record_header(c, w.pairs[flat % P]);
   r.outcome = d.outcome;
   r.kind = d.kind;

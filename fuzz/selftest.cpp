@@ -20,7 +20,7 @@ std::vector<Misbehaviour> parse_selftest(std::string_view spec) {
     const auto colon = item.find(':');
     const auto bad = [&] {
       return UsageError(std::string(kSelftestVariable) + ": '" + std::string(item) +
-                        "' is not ACTION@CASE:KERNEL (ACTION crash, hang or allocate)");
+                        "' is not ACTION@CASE:KERNEL (ACTION crash, hang, allocate or unperturbed)");
     };
     if (at == std::string_view::npos || colon == std::string_view::npos || colon < at) throw bad();
     Misbehaviour m;
@@ -32,7 +32,8 @@ std::vector<Misbehaviour> parse_selftest(std::string_view spec) {
       m.case_index = m.case_index * 10 + static_cast<std::uint64_t>(c - '0');
     }
     m.kernel = std::string(item.substr(colon + 1));
-    if (m.action != "crash" && m.action != "hang" && m.action != "allocate") throw bad();
+    if (m.action != "crash" && m.action != "hang" && m.action != "allocate" && m.action != "unperturbed")
+      throw bad();
     if (m.action == "allocate" && !memory_limit_enforced())
       throw UsageError(std::string(kSelftestVariable) +
                        ": allocate needs the memory limit, which this (sanitizer) build does not enforce");
@@ -56,6 +57,18 @@ void maybe_misbehave(const std::vector<Misbehaviour>& ms, std::uint64_t case_ind
       }
     }
   }
+}
+
+bool runs_unperturbed(const std::vector<Misbehaviour>& ms, std::uint64_t case_index, std::string_view kernel) {
+  for (const auto& m : ms)
+    if (m.action == "unperturbed" && m.case_index == case_index && m.kernel == kernel) return true;
+  return false;
+}
+
+Pair unperturbed(const Pair& p) {
+  Pair q = p;
+  q.unperturbed = true;
+  return q;
 }
 
 }  // namespace dlab::fuzz

@@ -5,6 +5,10 @@
 //   crash     std::abort() (SIGABRT)
 //   hang      spins until its CPU-time limit stops it
 //   allocate  allocates 64 MiB blocks (touched) until its memory limit stops it
+//   unperturbed  runs the pair with the strict policy: an exact kernel then
+//             returns *a* Delaunay triangulation, on cocircular input not the
+//             perturbed one -- `differs`, a simulated bug that only the
+//             reference comparison (fuzz/reference.hpp) can see
 // Guard: nothing else reads this variable; a campaign started with it says so
 // on stderr and stores it in DIR/campaign.json (so it cannot be resumed or
 // merged with a campaign without it), and `allocate` is refused where the
@@ -16,10 +20,12 @@
 #include <string_view>
 #include <vector>
 
+#include "fuzz/campaign_spec.hpp"
+
 namespace dlab::fuzz {
 
 struct Misbehaviour {
-  std::string action;  // crash | hang | allocate
+  std::string action;  // crash | hang | allocate | unperturbed
   std::uint64_t case_index = 0;
   std::string kernel;
 };
@@ -31,5 +37,10 @@ std::vector<Misbehaviour> parse_selftest(std::string_view spec);
 
 // Does the action of `m` if one matches (case, kernel); returns otherwise.
 void maybe_misbehave(const std::vector<Misbehaviour>& m, std::uint64_t case_index, std::string_view kernel);
+
+// True if an `unperturbed` action matches (case, kernel); the child then runs
+// unperturbed(pair) instead of the pair.
+bool runs_unperturbed(const std::vector<Misbehaviour>& m, std::uint64_t case_index, std::string_view kernel);
+Pair unperturbed(const Pair& p);
 
 }  // namespace dlab::fuzz
