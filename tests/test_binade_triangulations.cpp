@@ -42,25 +42,6 @@ namespace {
 
 const char* const kExactKernels[] = {"adaptive", "integer", "mp"};
 
-template <int D>
-const std::vector<Point<D>>& points_of(const PointSet& s) {
-  if constexpr (D == 2)
-    return s.p2;
-  else
-    return s.p3;
-}
-
-template <int D>
-PointSet make_set(std::vector<Point<D>> p) {
-  PointSet s;
-  s.dimension = D;
-  if constexpr (D == 2)
-    s.p2 = std::move(p);
-  else
-    s.p3 = std::move(p);
-  return s;
-}
-
 // What one run produced: its outcome and its canonical simplices.
 template <int D>
 struct Triangulation {
@@ -200,7 +181,7 @@ std::vector<Point3> half_integer_cube() {
 }  // namespace
 
 TEST_CASE("issue 17 witness, 2D: four points at -2^51 - 8, every algorithm x exact kernel", "[binade]") {
-  const PointSet ps = make_set<2>({{-2251799813685256.0, 1},
+  const PointSet ps = point_set<2>({{-2251799813685256.0, 1},
                                    {-2251799813685256.0, 0},
                                    {-2251799813685255.5, 0},
                                    {-2251799813685255.5, 1}});
@@ -218,7 +199,7 @@ TEST_CASE("issue 17 witness, 2D: four points at -2^51 - 8, every algorithm x exa
 
 TEST_CASE("issue 17 witness, 3D: a lattice of half-integers around -2^51, every algorithm x exact kernel",
           "[binade]") {
-  const PointSet ps = make_set<3>(half_integer_cube());
+  const PointSet ps = point_set<3>(half_integer_cube());
   std::string problems;
   const auto ref = reference<3>(ps, problems);
   CHECK(ref.simplices.size() > 0);

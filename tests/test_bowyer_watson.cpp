@@ -28,17 +28,6 @@ const MpKernel mp;
 const perturbed<MpKernel> pmp;
 
 template <int D>
-PointSet make_set(const std::vector<Point<D>>& pts) {
-  PointSet ps;
-  ps.dimension = D;
-  if constexpr (D == 2)
-    ps.p2 = pts;
-  else
-    ps.p3 = pts;
-  return ps;
-}
-
-template <int D>
 const std::vector<Point<D>>& pts_of(const RunResult& r) {
   if constexpr (D == 2)
     return r.points.p2;
@@ -54,7 +43,7 @@ RunResult triangulate(const std::vector<Point<D>>& pts, std::string kernel = "mp
   o.policy = policy;
   o.order = order;
   o.seed = seed;
-  return run(make_set<D>(pts), o);
+  return run(point_set<D>(pts), o);
 }
 
 // Exact convex hull boundary count in 2D (Andrew's monotone chain keeping
@@ -466,11 +455,11 @@ TEST_CASE("bw: unknown names are usage errors", "[bw]") {
   RunOptions o;
   o.kernel = "mp";
   o.order = "spiral";
-  CHECK_THROWS_AS(run(make_set<2>(lattice<2>(3)), o), UsageError);
+  CHECK_THROWS_AS(run(point_set<2>(lattice<2>(3)), o), UsageError);
   o.order = "brio";
   o.policy = "loose";
-  CHECK_THROWS_AS(run(make_set<2>(lattice<2>(3)), o), UsageError);
+  CHECK_THROWS_AS(run(point_set<2>(lattice<2>(3)), o), UsageError);
   o.policy = "sos";
   o.kernel = "exactish";
-  CHECK_THROWS_AS(run(make_set<2>(lattice<2>(3)), o), UsageError);
+  CHECK_THROWS_AS(run(point_set<2>(lattice<2>(3)), o), UsageError);
 }

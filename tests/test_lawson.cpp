@@ -35,17 +35,6 @@ using namespace dlab;
 
 namespace {
 
-template <int D>
-PointSet make_set(const std::vector<Point<D>>& pts) {
-  PointSet ps;
-  ps.dimension = D;
-  if constexpr (D == 2)
-    ps.p2 = pts;
-  else
-    ps.p3 = pts;
-  return ps;
-}
-
 RunResult go(const PointSet& ps, const std::string& algo, const std::string& kernel,
              const std::string& order = "brio", const std::string& policy = "sos", std::uint64_t seed = 1) {
   RunOptions o;
@@ -59,7 +48,7 @@ RunResult go(const PointSet& ps, const std::string& algo, const std::string& ker
 
 template <int D>
 void check_exact(const std::vector<Point<D>>& pts, const std::string& what) {
-  const PointSet ps = make_set<D>(pts);
+  const PointSet ps = point_set<D>(pts);
   for (const std::string kernel : {"adaptive", "integer", "mp"}) {
     INFO(what << " D=" << D << " kernel " << kernel);
     const RunResult bw = go(ps, "bowyer-watson", kernel);
@@ -114,7 +103,7 @@ TEST_CASE("lawson 3D: points outside and on the hull, coplanar with hull faces",
     for (int y = 0; y < 6; ++y)
       for (int x = 0; x < 6; ++x) pts.push_back({double(x), double(y), double(z)});
   check_exact<3>(pts, "two-layer grid");
-  const RunResult r = go(make_set<3>(pts), "lawson", "adaptive", "input");
+  const RunResult r = go(point_set<3>(pts), "lawson", "adaptive", "input");
   REQUIRE(r.outcome == RunResult::Outcome::ok);
   CHECK(test::counter(r.counters, "insert_exterior") > 60);   // every new point but the 4 duplicates
   CHECK(test::counter(r.counters, "exterior_facets") >= test::counter(r.counters, "insert_exterior"));
@@ -159,13 +148,13 @@ TEST_CASE("lawson on random small lattices equals Bowyer-Watson", "[lawson][prop
 }
 
 TEST_CASE("lawson counters show the insertion cases and flip types", "[lawson]") {
-  const RunResult u2 = go(make_set<2>(gen::uniform<2>(500, 2)), "lawson", "adaptive");
+  const RunResult u2 = go(point_set<2>(gen::uniform<2>(500, 2)), "lawson", "adaptive");
   CHECK(test::counter(u2.counters, "insert_1_3") > 0);
   CHECK(test::counter(u2.counters, "flips_2_2") > 0);
   // Random order on a lattice: later points land on edges of earlier triangles.
-  const RunResult l2 = go(make_set<2>(gen::lattice<2>(400)), "lawson", "adaptive", "random");
+  const RunResult l2 = go(point_set<2>(gen::lattice<2>(400)), "lawson", "adaptive", "random");
   CHECK(test::counter(l2.counters, "insert_2_4") > 0);
-  const RunResult l3 = go(make_set<3>(gen::lattice<3>(512)), "lawson", "adaptive", "random");
+  const RunResult l3 = go(point_set<3>(gen::lattice<3>(512)), "lawson", "adaptive", "random");
   CHECK(test::counter(l3.counters, "insert_2_6") > 0);
   CHECK(test::counter(l3.counters, "insert_n_2n") > 0);
   CHECK(test::counter(l3.counters, "flips_4_4") > 0);
@@ -173,7 +162,7 @@ TEST_CASE("lawson counters show the insertion cases and flip types", "[lawson]")
   CHECK(test::counter(l3.counters, "insert_on_hull") > 0);  // on a hull facet or edge: split with its ghosts
   CHECK(test::counter(l3.counters, "insert_on_hull") <= test::counter(l3.counters, "insert_2_6") + test::counter(l3.counters, "insert_n_2n"));
   CHECK(test::counter(l3.counters, "hull_edge_removals") > 0);  // coplanar hull edges with more than 2 tetrahedra below
-  const RunResult u3 = go(make_set<3>(gen::uniform<3>(500, 2)), "lawson", "adaptive");
+  const RunResult u3 = go(point_set<3>(gen::uniform<3>(500, 2)), "lawson", "adaptive");
   CHECK(test::counter(u3.counters, "insert_1_4") > 0);
   CHECK(test::counter(u3.counters, "flips_2_3") > 0);
   CHECK(test::counter(u3.counters, "flips_3_2") > 0);
@@ -185,9 +174,9 @@ TEST_CASE("lawson with inexact kernels: results or failure outcomes", "[lawson]"
   int failures = 0;
   for (const std::string kernel : {"float", "epsilon"})
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-      const PointSet ps2 = make_set<2>(gen::perturb_ulps<2>(gen::cospherical<2>(200, seed), 2, seed));
-      const PointSet ps3 = make_set<3>(gen::perturb_ulps<3>(gen::cospherical<3>(200, seed), 2, seed));
-      const PointSet grid = make_set<2>(gen::kettner_grid(64));
+      const PointSet ps2 = point_set<2>(gen::perturb_ulps<2>(gen::cospherical<2>(200, seed), 2, seed));
+      const PointSet ps3 = point_set<3>(gen::perturb_ulps<3>(gen::cospherical<3>(200, seed), 2, seed));
+      const PointSet grid = point_set<2>(gen::kettner_grid(64));
       for (const PointSet* ps : {&ps2, &ps3, &grid}) {
         const RunResult r = go(*ps, "lawson", kernel);
         if (r.outcome == RunResult::Outcome::failed) {
@@ -308,7 +297,7 @@ TEST_CASE("flip-existing: 2D converges to Delaunay, 3D reports when stuck", "[la
     CHECK(r.flips > 0);
     CHECK(validate(std::span<const Point2>(p2), r.simplices).delaunay());
     // The perturbed Delaunay triangulation is unique: Bowyer-Watson's.
-    const RunResult bw = go(make_set<2>(p2), "bowyer-watson", "mp", "input");
+    const RunResult bw = go(point_set<2>(p2), "bowyer-watson", "mp", "input");
     CHECK(test::canonical_simplices<2>(r.simplices) == test::canonical_simplices<2>(bw.simplices));
 
     const std::vector<Point3> p3 = gen::uniform<3>(150, seed);

@@ -40,6 +40,8 @@ using dlab::Point;
 using dlab::Point2;
 using dlab::Point3;
 using dlab::PointSet;
+using dlab::point_set;
+using dlab::points_of;
 using dlab::RunOptions;
 using dlab::RunResult;
 using Outcome = dlab::RunResult::Outcome;
@@ -61,25 +63,6 @@ std::vector<std::string> exact_kernels() {
   return list_from_env("DLAB_ORACLE_KERNELS", {"adaptive", "integer", "mp"});
 }
 const std::vector<std::string> kExactKernels = exact_kernels();
-
-template <int D>
-PointSet make_set(const std::vector<Point<D>>& p) {
-  PointSet s;
-  s.dimension = D;
-  if constexpr (D == 2)
-    s.p2 = p;
-  else
-    s.p3 = p;
-  return s;
-}
-
-template <int D>
-const std::vector<Point<D>>& points_of(const PointSet& s) {
-  if constexpr (D == 2)
-    return s.p2;
-  else
-    return s.p3;
-}
 
 std::string outcome_name(Outcome o) {
   switch (o) {
@@ -104,7 +87,7 @@ bool available(const std::string& algorithm, const std::string& kernel) {
     RunOptions o;
     o.algorithm = algorithm;
     o.kernel = kernel;
-    dlab::run(make_set<2>({{0, 0}, {1, 0}, {0, 1}}), o);
+    dlab::run(point_set<2>({{0, 0}, {1, 0}, {0, 1}}), o);
   } catch (const dlab::UsageError&) {
     ok = algorithm == "bowyer-watson";  // must exist: let the property fail on it
   }
@@ -254,7 +237,7 @@ void exact_property(const std::string& algorithm, std::size_t max_n) {
   RC_TAG(kFamilies[family]);
   const auto pts = family_points<D>(family, n, seed, lattice);
   RC_LOG() << kFamilies[family] << " n=" << pts.size() << " seed=" << seed << "\n";
-  const PointSet input = make_set<D>(pts);
+  const PointSet input = point_set<D>(pts);
   const auto cgal = dlab::oracle::cgal_delaunay(pts);
   RC_CLASSIFY(cgal.empty(), "lower-dimensional");
   for (const std::string& kernel : kExactKernels)
@@ -366,18 +349,18 @@ TEST_CASE("oracle: the validator accepts CGAL and rejects it broken", "[oracle][
 TEST_CASE("oracle: float fails visibly on near-degenerate input without crashing", "[oracle][float]") {
   namespace gen = dlab::gen;
   std::vector<PointSet> batch;
-  batch.push_back(make_set<2>(gen::kettner_grid(16)));
-  batch.push_back(make_set<2>(gen::kettner_grid(32)));
+  batch.push_back(point_set<2>(gen::kettner_grid(16)));
+  batch.push_back(point_set<2>(gen::kettner_grid(32)));
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     auto l2 = gen::lattice<2>(100 + 20 * seed);
     gen::scale_to_unit<2>(l2);
-    batch.push_back(make_set<2>(gen::perturb_ulps<2>(l2, 1 + static_cast<std::int64_t>(seed % 3), seed)));
+    batch.push_back(point_set<2>(gen::perturb_ulps<2>(l2, 1 + static_cast<std::int64_t>(seed % 3), seed)));
     auto c2 = gen::cospherical<2>(60, seed);
-    batch.push_back(make_set<2>(gen::perturb_ulps<2>(c2, 1, seed)));
+    batch.push_back(point_set<2>(gen::perturb_ulps<2>(c2, 1, seed)));
     auto l3 = gen::lattice<3>(64 + 20 * seed);
     gen::scale_to_unit<3>(l3);
-    batch.push_back(make_set<3>(gen::perturb_ulps<3>(l3, 1 + static_cast<std::int64_t>(seed % 3), seed)));
-    batch.push_back(make_set<3>(gen::perturb_ulps<3>(gen::cospherical<3>(40, seed), 1, seed)));
+    batch.push_back(point_set<3>(gen::perturb_ulps<3>(l3, 1 + static_cast<std::int64_t>(seed % 3), seed)));
+    batch.push_back(point_set<3>(gen::perturb_ulps<3>(gen::cospherical<3>(40, seed), 1, seed)));
   }
   std::map<std::string, int> classes;
   int runs = 0;
@@ -427,7 +410,7 @@ TEST_CASE("oracle: float never crashes (random near-degenerate sets)", "[oracle]
     RunOptions o;
     o.kernel = "float";
     o.order = "input";
-    const RunResult r = dlab::run(make_set<2>(pts), o);
+    const RunResult r = dlab::run(point_set<2>(pts), o);
     if (r.outcome == Outcome::failed) {
       RC_TAG("reported failure");
       return;

@@ -27,20 +27,10 @@ using dlab::Point;
 using dlab::Point2;
 using dlab::Point3;
 using dlab::PointSet;
+using dlab::point_set;
 using dlab::RunOptions;
 using dlab::RunResult;
 using Outcome = RunResult::Outcome;
-
-template <int D>
-PointSet make(const std::vector<Point<D>>& p) {
-  PointSet s;
-  s.dimension = D;
-  if constexpr (D == 2)
-    s.p2 = p;
-  else
-    s.p3 = p;
-  return s;
-}
 
 template <int D>
 const std::vector<Point<D>>& pts(const RunResult& r) {
@@ -57,7 +47,7 @@ void equals_cgal(const std::vector<Point<D>>& p, const std::string& what) {
     RunOptions o;
     o.algorithm = "tanemura";
     o.kernel = kernel;
-    const RunResult r = dlab::run(make<D>(p), o);
+    const RunResult r = dlab::run(point_set<D>(p), o);
     INFO(r.message);
     REQUIRE(r.outcome != Outcome::failed);
     const auto cgal = dlab::oracle::cgal_delaunay(pts<D>(r));  // on the snapped points for `integer`
@@ -69,7 +59,7 @@ void equals_cgal(const std::vector<Point<D>>& p, const std::string& what) {
     INFO(rep.summary());
     CHECK(rep.delaunay());
     o.policy = "strict";
-    const RunResult s = dlab::run(make<D>(p), o);
+    const RunResult s = dlab::run(point_set<D>(p), o);
     REQUIRE(s.outcome != Outcome::failed);
     CHECK(dlab::validate(s.points, s.simplices).delaunay());
   }
@@ -136,7 +126,7 @@ TEST_CASE("oracle tanemura: random lattices equal CGAL (property)", "[oracle][ta
     RunOptions o;
     o.algorithm = "tanemura";
     o.kernel = *rc::gen::elementOf(std::vector<std::string>{"adaptive", "integer", "mp"});
-    const RunResult res = dlab::run(make<3>(p), o);
+    const RunResult res = dlab::run(point_set<3>(p), o);
     RC_ASSERT(res.outcome != Outcome::failed);
     RC_ASSERT(dlab::oracle::canonical_simplices<3>(res.simplices) == dlab::oracle::cgal_delaunay(res.points.p3));
   });

@@ -45,17 +45,6 @@ namespace {
 
 using Outcome = RunResult::Outcome;
 
-template <int D>
-PointSet as_set(const std::vector<Point<D>>& pts) {
-  PointSet ps;
-  ps.dimension = D;
-  if constexpr (D == 2)
-    ps.p2 = pts;
-  else
-    ps.p3 = pts;
-  return ps;
-}
-
 RunResult go(const PointSet& ps, const std::string& algo, const std::string& kernel,
              const std::string& policy = "sos", const std::string& order = "brio", std::uint64_t seed = 1) {
   RunOptions o;
@@ -70,7 +59,7 @@ RunResult go(const PointSet& ps, const std::string& algo, const std::string& ker
 // Tanemura under `kernel` is valid Delaunay and equal to Bowyer–Watson.
 template <int D>
 void same_as_bw(const std::vector<Point<D>>& pts, const std::string& kernel) {
-  const PointSet ps = as_set<D>(pts);
+  const PointSet ps = point_set<D>(pts);
   const RunResult t = go(ps, "tanemura", kernel);
   const RunResult b = go(ps, "bowyer-watson", kernel);
   INFO("kernel " << kernel << " n " << pts.size() << ": " << t.message);
@@ -135,7 +124,7 @@ TEST_CASE("tanemura: 2D triangle count is 2n - h - 2 (independent hull count)", 
     for (int j = 1; i + j < 8; ++j) p.push_back({double(i), double(j)});
   const int n = static_cast<int>(p.size());
   for (const char* k : kExact) {
-    const RunResult r = go(as_set<2>(p), "tanemura", k);
+    const RunResult r = go(point_set<2>(p), "tanemura", k);
     REQUIRE(r.outcome == Outcome::ok);
     CHECK(static_cast<int>(r.simplices.size() / 3) == 2 * n - h - 2);
     CHECK(validate(r.points, r.simplices).delaunay());
@@ -150,7 +139,7 @@ TEST_CASE("tanemura: the start facet is strictly Delaunay", "[tanemura]") {
     REQUIRE(s.found);
     for (const char* policy : {"sos", "strict"})
       for (const char* order : {"input", "random"}) {
-        const RunResult b = go(as_set<2>(p), "bowyer-watson", "mp", policy, order, 3);
+        const RunResult b = go(point_set<2>(p), "bowyer-watson", "mp", policy, order, 3);
         bool in = false;
         for (std::size_t t = 0; t < b.simplices.size(); t += 3)
           for (int j = 0; j < 3; ++j)
@@ -169,7 +158,7 @@ TEST_CASE("tanemura: the start facet is strictly Delaunay", "[tanemura]") {
     for (const char* policy : {"sos", "strict"})
       if (strictly || std::string(policy) == "sos")
       for (const char* order : {"input", "random"}) {
-        const RunResult b = go(as_set<3>(p), "bowyer-watson", "mp", policy, order, 5);
+        const RunResult b = go(point_set<3>(p), "bowyer-watson", "mp", policy, order, 5);
         bool in = false;
         for (std::size_t t = 0; t < b.simplices.size(); t += 4) {
           int hits = 0;
@@ -207,16 +196,16 @@ TEST_CASE("tanemura: the start facet is strictly Delaunay", "[tanemura]") {
 
 TEST_CASE("tanemura: lower-dimensional and duplicate input", "[tanemura]") {
   for (const char* k : {"adaptive", "integer", "mp", "float", "epsilon"}) {
-    CHECK(go(as_set<2>({}), "tanemura", k).outcome == Outcome::lower_dimensional);
-    CHECK(go(as_set<2>({{1, 1}, {1, 1}, {1, 1}}), "tanemura", k).outcome == Outcome::lower_dimensional);
-    CHECK(go(as_set<2>({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), "tanemura", k).outcome ==
+    CHECK(go(point_set<2>({}), "tanemura", k).outcome == Outcome::lower_dimensional);
+    CHECK(go(point_set<2>({{1, 1}, {1, 1}, {1, 1}}), "tanemura", k).outcome == Outcome::lower_dimensional);
+    CHECK(go(point_set<2>({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), "tanemura", k).outcome ==
           Outcome::lower_dimensional);
-    CHECK(go(as_set<3>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {5, 7, 0}}), "tanemura", k).outcome ==
+    CHECK(go(point_set<3>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {5, 7, 0}}), "tanemura", k).outcome ==
           Outcome::lower_dimensional);
-    CHECK(go(as_set<3>({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), "tanemura", k).outcome ==
+    CHECK(go(point_set<3>({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), "tanemura", k).outcome ==
           Outcome::lower_dimensional);
     // Duplicates: indices refer to first occurrences.
-    const RunResult r = go(as_set<2>({{0, 0}, {1, 0}, {0, 1}, {1, 0}, {0, 0}, {0, 1}}), "tanemura", k);
+    const RunResult r = go(point_set<2>({{0, 0}, {1, 0}, {0, 1}, {1, 0}, {0, 0}, {0, 1}}), "tanemura", k);
     REQUIRE(r.outcome == Outcome::ok);
     CHECK(r.distinct_points == 3);
     REQUIRE(r.simplices.size() == 3);
@@ -231,7 +220,7 @@ TEST_CASE("tanemura: random lattices equal Bowyer-Watson (property)", "[tanemura
         rc::gen::container<std::array<int, 2>>(rc::gen::inRange(-r, r + 1)));
     std::vector<Point2> p;
     for (const auto& q : raw) p.push_back({double(q[0]), double(q[1])});
-    const PointSet ps = as_set<2>(p);
+    const PointSet ps = point_set<2>(p);
     const char* k = *rc::gen::elementOf(std::vector<const char*>{"adaptive", "integer", "mp"});
     const RunResult t = go(ps, "tanemura", k);
     const RunResult b = go(ps, "bowyer-watson", k);
@@ -245,7 +234,7 @@ TEST_CASE("tanemura: random lattices equal Bowyer-Watson (property)", "[tanemura
         rc::gen::container<std::array<int, 3>>(rc::gen::inRange(-r, r + 1))));
     std::vector<Point3> p;
     for (const auto& q : raw) p.push_back({double(q[0]), double(q[1]), double(q[2])});
-    const PointSet ps = as_set<3>(p);
+    const PointSet ps = point_set<3>(p);
     const char* k = *rc::gen::elementOf(std::vector<const char*>{"adaptive", "integer", "mp"});
     const RunResult t = go(ps, "tanemura", k);
     const RunResult b = go(ps, "bowyer-watson", k);
@@ -257,15 +246,15 @@ TEST_CASE("tanemura: random lattices equal Bowyer-Watson (property)", "[tanemura
 
 TEST_CASE("tanemura: float and epsilon give an outcome on near-degenerate input", "[tanemura][float]") {
   std::vector<PointSet> batch;
-  batch.push_back(as_set<2>(gen::kettner_grid(16)));
+  batch.push_back(point_set<2>(gen::kettner_grid(16)));
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     auto l2 = gen::lattice<2>(150);
     gen::scale_to_unit<2>(l2);
-    batch.push_back(as_set<2>(gen::perturb_ulps<2>(l2, 1 + static_cast<std::int64_t>(seed % 3), seed)));
+    batch.push_back(point_set<2>(gen::perturb_ulps<2>(l2, 1 + static_cast<std::int64_t>(seed % 3), seed)));
     auto l3 = gen::lattice<3>(100);
     gen::scale_to_unit<3>(l3);
-    batch.push_back(as_set<3>(gen::perturb_ulps<3>(l3, 1 + static_cast<std::int64_t>(seed % 3), seed)));
-    batch.push_back(as_set<3>(gen::perturb_ulps<3>(gen::cospherical<3>(50, seed), 1, seed)));
+    batch.push_back(point_set<3>(gen::perturb_ulps<3>(l3, 1 + static_cast<std::int64_t>(seed % 3), seed)));
+    batch.push_back(point_set<3>(gen::perturb_ulps<3>(gen::cospherical<3>(50, seed), 1, seed)));
   }
   int bad = 0;
   for (const PointSet& ps : batch)
@@ -290,9 +279,9 @@ TEST_CASE("tanemura: the search tree bounds the work per facet", "[tanemura]") {
     FAIL("no counter " << name);
     return std::uint64_t{0};
   };
-  const RunResult r2 = go(as_set<2>(gen::uniform<2>(20000, 11)), "tanemura", "adaptive");
+  const RunResult r2 = go(point_set<2>(gen::uniform<2>(20000, 11)), "tanemura", "adaptive");
   REQUIRE(r2.outcome == Outcome::ok);
-  const RunResult r3 = go(as_set<3>(gen::uniform<3>(5000, 12)), "tanemura", "adaptive");
+  const RunResult r3 = go(point_set<3>(gen::uniform<3>(5000, 12)), "tanemura", "adaptive");
   REQUIRE(r3.outcome == Outcome::ok);
   // A scan of the whole set per facet would examine ~n points; a working search, a few dozen.
   CHECK(counter(r2, "points_examined_per_facet_x1000") < 64 * 1000);
@@ -304,11 +293,11 @@ TEST_CASE("tanemura: the search tree bounds the work per facet", "[tanemura]") {
   // far points. A uniform bucket grid over the bounding box put the 4096 in one
   // cell, and each facet examined about 4000 points (issue 17 section 3); the
   // tree's leaves follow the points. Measured after the fix: 55 per facet.
-  const RunResult k = go(as_set<2>(gen::kettner_grid(64)), "tanemura", "adaptive");
+  const RunResult k = go(point_set<2>(gen::kettner_grid(64)), "tanemura", "adaptive");
   REQUIRE(k.outcome == Outcome::ok);
   CHECK(counter(k, "points_examined_per_facet_x1000") < 128 * 1000);
   CHECK(counter(k, "facets_searched") >= k.simplices.size() / 3);
-  const RunResult kb = go(as_set<2>(gen::kettner_grid(64)), "bowyer-watson", "adaptive");
+  const RunResult kb = go(point_set<2>(gen::kettner_grid(64)), "bowyer-watson", "adaptive");
   CHECK(oracle::canonical_simplices<2>(k.simplices) == oracle::canonical_simplices<2>(kb.simplices));
 }
 

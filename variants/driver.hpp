@@ -45,14 +45,6 @@ namespace dlab {
 namespace driver_detail {
 
 template <int D>
-std::vector<Point<D>>& points_of(PointSet& ps) {
-  if constexpr (D == 2)
-    return ps.p2;
-  else
-    return ps.p3;
-}
-
-template <int D>
 std::size_t count_distinct(std::vector<Point<D>> pts) {
   std::sort(pts.begin(), pts.end());
   return static_cast<std::size_t>(std::unique(pts.begin(), pts.end()) - pts.begin());

@@ -24,6 +24,31 @@ struct PointSet {
   std::size_t size() const { return dimension == 2 ? p2.size() : p3.size(); }
 };
 
+// The vector of dimension D in `ps`.
+template <int D>
+std::vector<Point<D>>& points_of(PointSet& ps) {
+  if constexpr (D == 2)
+    return ps.p2;
+  else
+    return ps.p3;
+}
+template <int D>
+const std::vector<Point<D>>& points_of(const PointSet& ps) {
+  if constexpr (D == 2)
+    return ps.p2;
+  else
+    return ps.p3;
+}
+
+// A point set of dimension D holding `pts`.
+template <int D>
+PointSet point_set(std::vector<Point<D>> pts) {
+  PointSet ps;
+  ps.dimension = D;
+  points_of<D>(ps) = std::move(pts);
+  return ps;
+}
+
 struct RunOptions {
   std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | tanemura | george
   std::string kernel = "adaptive";          // adaptive | integer | mp | float | epsilon
