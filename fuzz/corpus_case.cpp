@@ -78,6 +78,7 @@ class HeaderParser {
     if (key == "case") {
       if (!valid_case_name(value)) fail(no, "case '" + std::string(value) + "' is not a file name ([A-Za-z0-9._+-])");
       c_.name = value;
+      c_.name_line = no;
     } else if (key == "source") {
       c_.source = value;
     } else if (key == "exercises") {
@@ -208,7 +209,7 @@ CorpusCase read_corpus_case(const std::string& path) {
   CorpusCase c = parse_corpus_case(io::read_file(path), path, ExpectLines::all);
   const std::string stem = std::filesystem::path(path).stem().string();
   if (c.name != stem)
-    throw io::InputError(io::display_name(path) + ":" + std::to_string(c.header_end) + ": case '" + c.name +
+    throw io::InputError(io::display_name(path) + ":" + std::to_string(c.name_line) + ": case '" + c.name +
                          "' but the file is named " + stem + ".pts");
   return c;
 }

@@ -37,6 +37,7 @@ struct CorpusCase {
   PointSet points;
   // The first line after the header (a missing key is reported there).
   std::size_t header_end = 1;
+  std::size_t name_line = 0;  // of `# case:`
 
   // The expectation of pair `p`, or nullptr.
   const Expectation* expectation(const Pair& p) const;

@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 
 // The pairs of corpus_pairs() whose algorithm and kernel are listed (all if a list is empty).
 std::vector<Pair> selected_pairs(const ReplayOptions& o) {
-  for (const auto& a : o.algorithms) make_pair(a, "mp");  // UsageError for an unknown name
-  for (const auto& k : o.kernels) make_pair("bowyer-watson", k);
+  for (const auto& a : o.algorithms) fuzz::make_pair(a, "mp");  // UsageError for an unknown name
+  for (const auto& k : o.kernels) fuzz::make_pair("bowyer-watson", k);
   std::vector<Pair> out;
   for (const Pair& p : corpus_pairs()) {
     const bool algo = o.algorithms.empty() ||

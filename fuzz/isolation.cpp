@@ -52,8 +52,8 @@ void write_all(int fd, const std::string& s) {
       runner.emplace(*c);
     }
     limit_cpu_for_next(w.limits.cpu_seconds);
-    maybe_misbehave(w.selftest, c->plan.index, pair.kernel);
-    const PairRecord r = runs_unperturbed(w.selftest, c->plan.index, pair.kernel)
+    maybe_misbehave(w.selftest, c->plan.index, pair);
+    const PairRecord r = runs_unperturbed(w.selftest, c->plan.index, pair)
                              ? runner->run(unperturbed(pair), w.timing)
                              : runner->run(pair, w.timing);
     line = std::to_string(f) + ' ' + r.outcome + ' ' + (r.exact ? '1' : '0') + '\t' + to_json_line(r) + '\n';

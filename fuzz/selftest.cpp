@@ -20,7 +20,7 @@ std::vector<Misbehaviour> parse_selftest(std::string_view spec) {
     const auto colon = item.find(':');
     const auto bad = [&] {
       return UsageError(std::string(kSelftestVariable) + ": '" + std::string(item) +
-                        "' is not ACTION@CASE:KERNEL (ACTION crash, hang, allocate or unperturbed)");
+                        "' is not ACTION@CASE:[ALGO/]KERNEL (ACTION crash, hang, allocate or unperturbed)");
     };
     if (at == std::string_view::npos || colon == std::string_view::npos || colon < at) throw bad();
     Misbehaviour m;
@@ -32,6 +32,11 @@ std::vector<Misbehaviour> parse_selftest(std::string_view spec) {
       m.case_index = m.case_index * 10 + static_cast<std::uint64_t>(c - '0');
     }
     m.kernel = std::string(item.substr(colon + 1));
+    if (const auto slash = m.kernel.find('/'); slash != std::string::npos) {
+      m.algo = m.kernel.substr(0, slash);
+      m.kernel.erase(0, slash + 1);
+      if (m.algo.empty()) throw bad();
+    }
     if (m.action != "crash" && m.action != "hang" && m.action != "allocate" && m.action != "unperturbed")
       throw bad();
     if (m.action == "allocate" && !memory_limit_enforced())
@@ -42,9 +47,17 @@ std::vector<Misbehaviour> parse_selftest(std::string_view spec) {
   return out;
 }
 
-void maybe_misbehave(const std::vector<Misbehaviour>& ms, std::uint64_t case_index, std::string_view kernel) {
+namespace {
+
+bool matches(const Misbehaviour& m, std::uint64_t case_index, const Pair& p) {
+  return m.case_index == case_index && m.kernel == p.kernel && (m.algo.empty() || m.algo == p.algo_name());
+}
+
+}  // namespace
+
+void maybe_misbehave(const std::vector<Misbehaviour>& ms, std::uint64_t case_index, const Pair& pair) {
   for (const auto& m : ms) {
-    if (m.case_index != case_index || m.kernel != kernel) continue;
+    if (!matches(m, case_index, pair)) continue;
     if (m.action == "crash") std::abort();
     if (m.action == "hang") {
       volatile std::uint64_t x = 0;
@@ -59,9 +72,9 @@ void maybe_misbehave(const std::vector<Misbehaviour>& ms, std::uint64_t case_ind
   }
 }
 
-bool runs_unperturbed(const std::vector<Misbehaviour>& ms, std::uint64_t case_index, std::string_view kernel) {
+bool runs_unperturbed(const std::vector<Misbehaviour>& ms, std::uint64_t case_index, const Pair& pair) {
   for (const auto& m : ms)
-    if (m.action == "unperturbed" && m.case_index == case_index && m.kernel == kernel) return true;
+    if (m.action == "unperturbed" && matches(m, case_index, pair)) return true;
   return false;
 }
 

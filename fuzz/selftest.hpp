@@ -1,7 +1,8 @@
 // Deliberate misbehaviour, for the tests of isolation only: with
-//   DLAB_FUZZ_SELFTEST=ACTION@CASE:KERNEL[,ACTION@CASE:KERNEL...]
+//   DLAB_FUZZ_SELFTEST=ACTION@CASE:[ALGO/]KERNEL[,ACTION@CASE:[ALGO/]KERNEL...]
 // in the environment, the child process that runs case CASE with a pair of
-// kernel KERNEL does ACTION instead of running it:
+// kernel KERNEL (and algorithm ALGO, a Pair::algo_name(), if given) does
+// ACTION instead of running it:
 //   crash     std::abort() (SIGABRT)
 //   hang      spins until its CPU-time limit stops it
 //   allocate  allocates 64 MiB blocks (touched) until its memory limit stops it
@@ -27,6 +28,7 @@ namespace dlab::fuzz {
 struct Misbehaviour {
   std::string action;  // crash | hang | allocate | unperturbed
   std::uint64_t case_index = 0;
+  std::string algo;  // empty: every algorithm
   std::string kernel;
 };
 
@@ -35,12 +37,12 @@ inline constexpr const char* kSelftestVariable = "DLAB_FUZZ_SELFTEST";
 // Throws UsageError for a malformed spec.
 std::vector<Misbehaviour> parse_selftest(std::string_view spec);
 
-// Does the action of `m` if one matches (case, kernel); returns otherwise.
-void maybe_misbehave(const std::vector<Misbehaviour>& m, std::uint64_t case_index, std::string_view kernel);
+// Does the action of `m` if one matches (case, pair); returns otherwise.
+void maybe_misbehave(const std::vector<Misbehaviour>& m, std::uint64_t case_index, const Pair& pair);
 
-// True if an `unperturbed` action matches (case, kernel); the child then runs
+// True if an `unperturbed` action matches (case, pair); the child then runs
 // unperturbed(pair) instead of the pair.
-bool runs_unperturbed(const std::vector<Misbehaviour>& m, std::uint64_t case_index, std::string_view kernel);
+bool runs_unperturbed(const std::vector<Misbehaviour>& m, std::uint64_t case_index, const Pair& pair);
 Pair unperturbed(const Pair& p);
 
 }  // namespace dlab::fuzz
