@@ -13,6 +13,7 @@ int cmd_demo(int argc, char** argv);
 int cmd_flip(int argc, char** argv);
 int cmd_fuzz(int argc, char** argv);
 int cmd_corpus(int argc, char** argv);
+int cmd_shrink(int argc, char** argv);
 int cmd_version(int argc, char** argv);
 
 }  // namespace dlab::cli

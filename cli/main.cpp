@@ -27,6 +27,8 @@ const char* const kUsage =
     "            [--dim 2|3] [--n N|LO..HI] [--seed S] [--jobs J] [--shard k/n]\n"
     "                                   classified robustness campaign (dlab fuzz --help)\n"
     "  dlab fuzz merge DIR... --out DIR shards -> exactly the unsharded campaign\n"
+    "  dlab shrink INPUT --algo A --kernel K [--seed S] [-o OUT]  a failing point set -> a minimal\n"
+    "                                   one with the same failure (dlab shrink --help)\n"
     "  dlab corpus replay DIR|FILE... [--jobs J]  replay the regression corpus (dlab corpus --help)\n"
     "  dlab corpus add INPUT --to DIR [--name NAME] [--replace]  a point file -> a corpus case\n"
     "  dlab --version                   version, git commit (at configure time) and compiler\n"
@@ -57,6 +59,7 @@ int main(int argc, char** argv) {
     if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
     if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
     if (cmd == "corpus") return dlab::cli::cmd_corpus(argc, argv);
+    if (cmd == "shrink") return dlab::cli::cmd_shrink(argc, argv);
     if (cmd == "--version" || cmd == "version") return dlab::cli::cmd_version(argc, argv);
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << kUsage << dlab::cli::kOutcomeHelp;

@@ -152,7 +152,9 @@ int finish_campaign(const std::string& dir, const CampaignSpec& spec, std::ostre
   });
   const std::string table = summary.table();
   write_text_file((fs::path(dir) / "summary.txt").string(), table);
-  failures.write(dir, spec);
+  // The limits stored in DIR/campaign.json, so that a run and a merge of its
+  // shards shrink under the same ones (the file keeps --timeout in whole seconds).
+  failures.write(dir, spec, read_campaign_json((fs::path(dir) / "campaign.json").string()).limits);
   out << table;
   out.flush();
   return summary.exact_failures() > 0 ? 1 : 0;

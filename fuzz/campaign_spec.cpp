@@ -57,8 +57,8 @@ RunOptions Pair::options(std::uint64_t order_seed) const {
   RunOptions o;
   o.algorithm = algorithm;
   o.kernel = kernel;
-  o.policy = kernel_is_exact(kernel) && !unperturbed ? "sos" : "strict";
-  o.order = "brio";
+  o.policy = !policy.empty() ? policy : kernel_is_exact(kernel) && !unperturbed ? "sos" : "strict";
+  o.order = order;
   o.seed = order_seed;
   o.exact_sphere = exact_sphere;
   o.enclosing_box = enclosing_box;

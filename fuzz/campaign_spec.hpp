@@ -21,6 +21,10 @@ struct Pair {
   bool exact_sphere = false;
   bool enclosing_box = false;
   bool unperturbed = false;  // test only (fuzz/selftest.hpp): the strict policy even for an exact kernel
+  // `dlab shrink --policy / --order` (a campaign keeps the defaults): empty
+  // policy: dlab triangulate's default for the kernel.
+  std::string policy;
+  std::string order = "brio";
 
   std::string algo_name() const;  // "bowyer-watson", "george+exact-sphere", ...
   // dlab triangulate's defaults: sos for exact kernels, strict for the others; brio order.

@@ -100,10 +100,17 @@ std::string gen_command(const gen::GenOptions& g) {
 }
 
 std::string replay_command(const CasePlan& c, const Pair& p) {
-  std::string s = gen_command(c.gen) + " | dlab triangulate - --algo " + p.algorithm;
+  return gen_command(c.gen) + " | dlab triangulate -" + triangulate_options(p, c.order_seed);
+}
+
+std::string triangulate_options(const Pair& p, std::uint64_t order_seed) {
+  std::string s = " --algo " + p.algorithm;
   if (p.exact_sphere) s += " --exact-sphere";
   if (p.enclosing_box) s += " --enclosing-box";
-  return s + " --kernel " + p.kernel + " --seed " + std::to_string(c.order_seed) + " --validate";
+  s += " --kernel " + p.kernel;
+  if (!p.policy.empty()) s += " --policy " + p.policy;
+  if (p.order != "brio") s += " --order " + p.order;
+  return s + " --seed " + std::to_string(order_seed) + " --validate";
 }
 
 }  // namespace dlab::fuzz

@@ -37,5 +37,9 @@ std::string gen_extra_args(const gen::GenOptions& g);
 std::string gen_command(const gen::GenOptions& g);
 // gen_command | dlab triangulate - --algo ... --kernel ... --seed O --validate
 std::string replay_command(const CasePlan& c, const Pair& p);
+// The options of dlab triangulate that run the pair as the campaign (or
+// dlab shrink) does: " --algo A [--exact-sphere] [--enclosing-box] --kernel K
+// [--policy P] [--order O] --seed S --validate" (S: order_seed).
+std::string triangulate_options(const Pair& p, std::uint64_t order_seed);
 
 }  // namespace dlab::fuzz

@@ -9,6 +9,7 @@
 #include "fuzz/campaign_files.hpp"
 #include "fuzz/case_plan.hpp"
 #include "fuzz/fuzz_outcome.hpp"
+#include "fuzz/shrink.hpp"
 
 namespace dlab::fuzz {
 namespace {
@@ -42,9 +43,30 @@ std::string Signature::file_stem() const {
   return s;
 }
 
-PointSet shrink_failure(const PointSet& points, const Pair&, std::string_view, bool& shrunk) {
-  shrunk = false;
-  return points;
+ShrunkFailure shrink_failure(const PointSet& points, const Pair& pair, std::uint64_t order_seed,
+                             const FailureClass& failure, const Limits& limits) {
+  ShrunkFailure out;
+  const ChildOracle oracle(pair, order_seed, limits);
+  const Observed first = oracle.observe(points);
+  out.points = points;
+  if (!failure.matches(first)) {
+    out.note = "no: in a fresh child the case gave " + FailureClass{first.outcome, first.kind}.describe() +
+               ", not " + failure.describe();
+    return out;
+  }
+  ShrinkLimits lim;
+  const bool slow = failure.outcome == kTimeout || failure.outcome == kOutOfMemory;
+  lim.max_tests = (slow ? kCampaignShrinkSlowTests : kCampaignShrinkTests) - 2;  // + the first and last runs
+  ShrinkReport r = shrink(points, [&](const PointSet& p) { return failure.matches(oracle.observe(p)); }, lim);
+  const Observed last = oracle.observe(r.points);
+  r.tests += 2;
+  out.points = r.points;
+  out.shrunk = true;
+  out.detail = last.detail;
+  out.note = "yes: " + describe(r) + " (at most " + std::to_string(lim.max_tests + 2) + " in a campaign)";
+  if (!failure.matches(last))
+    out.note += "; but run again it gave " + FailureClass{last.outcome, last.kind}.describe() + " (flaky)";
+  return out;
 }
 
 void FailureIndex::add(const PairRecord& r) {
@@ -53,7 +75,7 @@ void FailureIndex::add(const PairRecord& r) {
   if (f.count++ == 0 || r.case_index < f.record.case_index) f.record = r;
 }
 
-std::size_t FailureIndex::write(const std::string& dir, const CampaignSpec& spec) const {
+std::size_t FailureIndex::write(const std::string& dir, const CampaignSpec& spec, const Limits& limits) const {
   namespace fs = std::filesystem;
   const fs::path folder = fs::path(dir) / "failures";
   std::error_code ec;
@@ -66,8 +88,8 @@ std::size_t FailureIndex::write(const std::string& dir, const CampaignSpec& spec
     const PairRecord& r = first.record;
     const CasePlan plan = plan_case(spec, r.case_index);
     const Pair pair = make_pair(r.algo, r.kernel);
-    bool shrunk = false;
-    const PointSet points = shrink_failure(gen::generate(plan.gen), pair, r.outcome, shrunk);
+    const ShrunkFailure shrunk =
+        shrink_failure(gen::generate(plan.gen), pair, plan.order_seed, FailureClass{r.outcome, r.kind}, limits);
     std::ostringstream out;
     out << "# dlab fuzz failure: " << r.algo << " x " << r.kernel << ", " << r.dim << "D: " << r.outcome
         << (r.kind.empty() ? "" : " (" + r.kind + ")") << "\n"
@@ -76,8 +98,11 @@ std::size_t FailureIndex::write(const std::string& dir, const CampaignSpec& spec
         << r.seed << ", campaign seed " << spec.seed << "), " << r.gen << " n=" << r.n
         << (r.gen_args.empty() ? "" : " " + r.gen_args) << "\n"
         << "# replay: " << replay_command(plan, pair) << "\n"
-        << "# shrunk: " << (shrunk ? "yes" : "no (the shrinker's hook: fuzz/failures.hpp shrink_failure)") << "\n";
-    io::write_points(out, points, io::FloatFormat::hex);
+        << "# shrunk: " << shrunk.note << "\n"
+        << (shrunk.shrunk ? "# detail of the points below: " + shrunk.detail + "\n" : "")
+        << "# replay the points below: dlab triangulate failures/" << file.filename().string()
+        << triangulate_options(pair, plan.order_seed) << "   (from DIR)\n";
+    io::write_points(out, shrunk.points, io::FloatFormat::hex);
     write_text_file(file.string(), out.str());
     ++written;
   }

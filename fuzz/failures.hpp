@@ -6,8 +6,9 @@
 // a merged campaign writes the same files as the unsharded one.
 //
 // File: comment lines (signature, detail, case, seed, the command that replays
-// it, whether it was shrunk), then the points as hexadecimal floats -- a valid
-// INPUT for `dlab triangulate` and `dlab shrink`.
+// the case, whether and how much it was shrunk, the command that replays the
+// file's points), then the points -- shrunk (shrink_failure) -- as
+// hexadecimal floats: a valid INPUT for `dlab triangulate` and `dlab shrink`.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -16,7 +17,9 @@
 #include <tuple>
 
 #include "fuzz/campaign_spec.hpp"
+#include "fuzz/isolation.hpp"
 #include "fuzz/record.hpp"
+#include "fuzz/shrink_oracle.hpp"
 
 namespace dlab::fuzz {
 
@@ -31,18 +34,32 @@ struct Signature {
   std::string file_stem() const;
 };
 
-// The shrinker's hook: the point set written for a failure. Returns the points
-// unchanged and sets `shrunk` false until `dlab shrink` (issue 12) plugs in
-// here (same pair, same outcome class, fewer and simpler points).
-PointSet shrink_failure(const PointSet& points, const Pair& pair, std::string_view outcome, bool& shrunk);
+// The point set written for a failure: `dlab shrink`'s (fuzz/shrink.hpp) on the
+// case's points, each test a child process under the campaign's limits
+// (fuzz/shrink_oracle.hpp), kept while the outcome class and kind persist. At
+// most kCampaignShrinkTests tests, kCampaignShrinkSlowTests for timeout and
+// out-of-memory (each of their tests may take the whole limit), so shrinking
+// stays small beside a campaign: it runs once per new signature. A failure that
+// does not show again in a fresh child (e.g. a DLAB_FUZZ_SELFTEST one) is
+// written as generated. Deterministic, so a merged campaign writes the same files.
+inline constexpr std::uint64_t kCampaignShrinkTests = 400;
+inline constexpr std::uint64_t kCampaignShrinkSlowTests = 12;
+struct ShrunkFailure {
+  PointSet points;
+  bool shrunk = false;
+  std::string note;    // the file's "# shrunk:" line, after "shrunk: "
+  std::string detail;  // shrunk: the detail of the points written, from a last run of them
+};
+ShrunkFailure shrink_failure(const PointSet& points, const Pair& pair, std::uint64_t order_seed,
+                             const FailureClass& failure, const Limits& limits);
 
 class FailureIndex {
  public:
   void add(const PairRecord& r);
   std::size_t size() const { return first_.size(); }
-  // Writes DIR/failures/STEM.txt for each signature that has no file yet;
-  // returns how many it wrote. Throws UsageError if it cannot write.
-  std::size_t write(const std::string& dir, const CampaignSpec& spec) const;
+  // Writes DIR/failures/STEM.txt for each signature that has no file yet,
+  // shrunk under `limits`; returns how many it wrote. Throws UsageError if it cannot write.
+  std::size_t write(const std::string& dir, const CampaignSpec& spec, const Limits& limits) const;
 
  private:
   struct First {

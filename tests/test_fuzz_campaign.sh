@@ -3,7 +3,7 @@
 #   test_fuzz_campaign.sh DLAB WORKDIR SANITIZED(ON|OFF)
 # Small campaigns (seconds) whose outcomes are checked against what is known
 # of the inputs: exact pairs only ever ok, float fails on near-degenerate sets;
-# a failure file replays its failure; --case re-runs a case byte for byte;
+# a failure file replays its failure, shrunk; --case re-runs a case byte for byte;
 # resume after a torn line and after kill -9 equals the uninterrupted run;
 # shards run with GNU parallel and merged equal the unsharded run byte for byte
 # (records' seconds are 0 under --no-timing, the comparison is exact); bad
@@ -52,19 +52,28 @@ signatures=$(grep -v -E '"outcome":"(ok|lower-dimensional)"' full/results.jsonl 
   sed -E 's/.*"algo":"([^"]*)","kernel":"([^"]*)".*"outcome":"([^"]*)","kind":"((\\.|[^"\\])*)".*/\1 \2 \3 \4/' | sort -u | wc -l)
 [ "$(ls full/failures | wc -l)" = "$signatures" ] || fail "full: $(ls full/failures | wc -l) failure files for $signatures signatures"
 
-# A failure file replays its failure: same points from `dlab gen`, exit 1 from triangulate.
-f=$(ls full/failures/bowyer-watson.float.* full/failures/lawson.float.* 2>/dev/null | head -1)
-if [ -z "$f" ]; then
-  fail "replay: no float failure file"
-else
+# A failure file replays its failure: its case from `dlab gen` fails (exit 1 from
+# triangulate), and the file's own points, shrunk by dlab shrink's algorithm, are
+# no more (in some file fewer) and fail with the same outcome class, re-run here
+# by dlab triangulate.
+ls full/failures/bowyer-watson.float.* full/failures/lawson.float.* > /dev/null 2>&1 || fail "replay: no float failure file"
+fewer=0
+for f in full/failures/*; do
   replay=$(sed -n 's/^# replay: //p' "$f")
   gen_part=${replay%% | *}
   tri_part=${replay#* | }
-  $DLAB ${gen_part#dlab } > replay.pts || fail "replay: dlab gen failed"
-  grep -v '^#' "$f" | cmp -s - replay.pts || fail "replay: the file's points are not dlab gen's ($f)"
+  outcome=$(sed -n 's/^# dlab fuzz failure: [^,]*, [23]D: \([a-z-]*\).*/\1/p' "$f")
+  $DLAB ${gen_part#dlab } > replay.pts || fail "replay: dlab gen failed ($f)"
   $DLAB ${tri_part#dlab } < replay.pts > /dev/null 2> replay.err
   [ $? = 1 ] || fail "replay: '$tri_part' did not fail again ($f)"
-fi
+  grep -q '^# shrunk: yes: ' "$f" || fail "replay: not shrunk ($f)"
+  $DLAB ${tri_part#dlab } < "$f" > /dev/null 2> shrunk.err
+  [ $? = 1 ] && grep -q "^dlab triangulate: $outcome: " shrunk.err ||
+    fail "replay: the shrunk points do not give $outcome ($f: $(cat shrunk.err))"
+  [ "$(grep -vc '^#' "$f")" -le "$(wc -l < replay.pts)" ] || fail "replay: more points than the case ($f)"
+  [ "$(grep -vc '^#' "$f")" -lt "$(wc -l < replay.pts)" ] && fewer=$((fewer + 1))
+done
+[ "$fewer" -gt 0 ] || fail "replay: no failure file has fewer points than its case"
 
 # ---- --case i re-runs one case alone, byte for byte -------------------------
 "$DLAB" fuzz "${CAMPAIGN[@]}" --case 23 > case23.jsonl 2> /dev/null
@@ -149,6 +158,9 @@ fi
 [ "$(grep -c '"kernel":"adaptive".*"outcome":"ok"' isolated/results.jsonl)" = 6 ] || fail "isolated: adaptive records not all ok"
 grep -q 'deliberate failures are injected' isolated.err || fail "isolated: no warning about DLAB_FUZZ_SELFTEST"
 ls isolated/failures | grep -q 'crash' || fail "isolated: no failure file for the crash"
+# A deliberate crash does not show again in the shrinker's fresh child: written as generated.
+grep -q '^# shrunk: no: in a fresh child the case gave ok, not crash (SIGABRT)$' isolated/failures/*crash* ||
+  fail "isolated: the crash file's shrunk line: $(grep '^# shrunk' isolated/failures/*crash*)"
 # A crash of an exact pair is a bug: exit 1.
 expect_rc 1 exact-crash env DLAB_FUZZ_SELFTEST=crash@2:adaptive "$DLAB" fuzz --algo bowyer-watson \
   --kernel adaptive --gen uniform --n 12 --seed 2 --cases 4 --out exact-crash

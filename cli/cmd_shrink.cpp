@@ -1,0 +1,222 @@
+// `dlab shrink` (issue 12): a failing point set -> a smaller one with the same
+// failure. The work is in fuzz/shrink*.hpp (ddmin, coordinate passes, the
+// child-process oracle); this file parses the command line and writes the
+// result with its header.
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/point_reader.hpp"
+#include "cli/point_writer.hpp"
+#include "fuzz/campaign_spec.hpp"
+#include "fuzz/case_plan.hpp"
+#include "fuzz/fuzz_outcome.hpp"
+#include "fuzz/shrink.hpp"
+#include "fuzz/shrink_oracle.hpp"
+
+namespace dlab::cli {
+namespace {
+
+const char* const kShrinkHelp =
+    "usage: dlab shrink INPUT --algo A --kernel K [--exact-sphere] [--enclosing-box]\n"
+    "                   [--policy sos|strict] [--order input|random|brio|hilbert] [--seed S]\n"
+    "                   [--outcome CLASS] [--kind KIND | --any-kind] [--dim 2|3] [-o OUT]\n"
+    "                   [--timeout SEC] [--memory MIB] [--max-tests N]\n"
+    "Shrinks a point set on which the pair fails to a smaller one on which it fails the same\n"
+    "way: ddmin over the points (Zeller and Hildebrandt, IEEE TSE 2002) down to a 1-minimal set,\n"
+    "then coordinate passes -- translate toward the origin by exact offsets, snap coordinates to\n"
+    "integers, round them to fewer significant bits -- each kept only while the failure persists,\n"
+    "repeated until nothing changes. Deterministic: same input and options, same output.\n"
+    "INPUT: any point file dlab reads, e.g. a campaign's DIR/failures/*.txt ('-': stdin).\n"
+    "The pair runs as dlab triangulate runs it (A, K, --policy, --order, --seed: same meaning and\n"
+    "defaults; give the --seed of the failure's replay line). Every test runs in a child process\n"
+    "under dlab fuzz's limits and classification (--timeout SEC CPU time, 10; --memory MIB, 4096),\n"
+    "so crash, timeout and out-of-memory shrink too.\n"
+    "The same failure: the outcome class INPUT gives (--outcome CLASS: check that it is that one:\n"
+    "not-delaunay, invalid, reported, differs, crash, timeout, out-of-memory) and its kind -- the\n"
+    "invalid check group, the reported message with numbers as '#', the crash's signal (--kind\n"
+    "KIND: check it; --any-kind: any kind of that class will do).\n"
+    "  --dim 2|3       check INPUT's dimension\n"
+    "  --max-tests N   runs of the pair at most, those of INPUT and of the result included (20000)\n"
+    "  -o OUT          the shrunk points, hexadecimal floats after '#' comment lines (what was\n"
+    "                  shrunk, the pair, the failure, the sizes, the dlab triangulate command\n"
+    "                  that replays it, and INPUT's own comments); stdout by default\n"
+    "Prints the sizes before and after (points, significant bits of all coordinates) and the\n"
+    "number of tests on stderr.\n"
+    "Example:\n"
+    "  dlab fuzz --algo lawson --kernel float --gen near-degenerate --cases 200 --out c1\n"
+    "  dlab shrink c1/failures/lawson.float.2d.not-delaunay.txt --algo lawson --kernel float \\\n"
+    "      --seed SEED -o small.txt     (SEED: the --seed of the file's replay line)\n"
+    "  dlab triangulate small.txt --algo lawson --kernel float --seed SEED --validate\n"
+    "Exit status: 0 shrunk; 1 the shrunk set did not fail the same way when run again (a flaky\n"
+    "failure, e.g. a timeout near its limit); 2 bad usage or INPUT (FILE:LINE: problem), or an\n"
+    "INPUT on which the pair does not fail (or not as --outcome / --kind say): nothing to shrink.\n";
+
+struct Options {
+  std::string input, output = "-";
+  fuzz::Pair pair;
+  std::uint64_t order_seed = 0;
+  std::optional<std::string> outcome, kind;
+  bool any_kind = false;
+  fuzz::Limits limits;
+  std::uint64_t max_tests = 20000;
+  std::optional<int> dim;
+};
+
+Options parse(int argc, char** argv) {
+  const Args a = parse_args(argc, argv, 2,
+                            {"--algo", "--kernel", "--policy", "--order", "--seed", "--outcome", "--kind", "--dim",
+                             "-o", "--timeout", "--memory", "--max-tests"},
+                            {"--exact-sphere", "--enclosing-box", "--any-kind"});
+  if (a.positional.size() != 1)
+    throw UsageError(a.positional.empty() ? "missing INPUT" : "unexpected argument '" + a.positional[1] + "'");
+  Options o;
+  o.input = a.positional[0];
+  o.output = a.get("-o").value_or("-");
+  const auto algo = a.get("--algo"), kernel = a.get("--kernel");
+  if (!algo || !kernel) throw UsageError("give the pair that fails: --algo A --kernel K");
+  std::string name = *algo;
+  if (a.has("--exact-sphere")) name += "+exact-sphere";
+  if (a.has("--enclosing-box")) name += "+enclosing-box";
+  o.pair = fuzz::make_pair(name, *kernel);
+  o.pair.policy = a.get("--policy").value_or("");
+  o.pair.order = a.get("--order").value_or("brio");
+  if (!o.pair.policy.empty() && o.pair.policy != "sos" && o.pair.policy != "strict")
+    throw UsageError("--policy must be sos or strict, not '" + o.pair.policy + "'");
+  const std::string& ord = o.pair.order;
+  if (ord != "input" && ord != "random" && ord != "brio" && ord != "hilbert")
+    throw UsageError("--order must be input, random, brio or hilbert, not '" + ord + "'");
+  o.order_seed = a.u64("--seed", 0);
+  o.outcome = a.get("--outcome");
+  if (o.outcome && (!fuzz::is_failure(*o.outcome) || std::find(std::begin(fuzz::kOutcomeOrder),
+                                                               std::end(fuzz::kOutcomeOrder),
+                                                               *o.outcome) == std::end(fuzz::kOutcomeOrder)))
+    throw UsageError("--outcome must be a failure class: not-delaunay, invalid, reported, differs, crash, "
+                     "timeout or out-of-memory, not '" + *o.outcome + "'");
+  o.kind = a.get("--kind");
+  o.any_kind = a.has("--any-kind");
+  if (o.kind && o.any_kind) throw UsageError("--kind and --any-kind exclude each other");
+  if (a.get("--dim")) o.dim = static_cast<int>(a.i64("--dim", 2, 2, 3));
+  if (a.get("--timeout")) o.limits.cpu_seconds = fuzz::parse_duration("--timeout", *a.get("--timeout"));
+  o.limits.memory_bytes = a.u64("--memory", 4096, std::uint64_t{1} << 24) << 20;
+  if (o.limits.memory_bytes == 0) throw UsageError("--memory must be at least 1 (MiB)");
+  o.max_tests = a.u64("--max-tests", 20000);
+  if (o.max_tests < 2) throw UsageError("--max-tests must be at least 2 (the run of INPUT and the final one)");
+  return o;
+}
+
+// INPUT's comment lines, for the output: a line whose key the header writes
+// ("replay: ...") is kept as "unshrunk KEY: ..." so that the header's own is the
+// only one a reader (dlab corpus add) finds; INPUT's "shrunk:" line is dropped.
+std::string input_comments(std::string_view text) {
+  static const char* const keys[] = {"dlab shrink:", "input:", "detail:", "replay:", "replay the points below:"};
+  std::string out;
+  for (std::size_t pos = 0; pos < text.size();) {
+    const std::size_t nl = std::min(text.find('\n', pos), text.size());
+    std::string_view l = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    const std::size_t hash = l.find_first_not_of(" \t");
+    if (hash == l.npos || l[hash] != '#') continue;
+    std::string_view body = l.substr(hash + 1);
+    while (!body.empty() && body.front() == ' ') body.remove_prefix(1);
+    if (body.rfind("shrunk:", 0) == 0) continue;
+    bool ours = false;
+    for (const char* k : keys) ours = ours || body.rfind(k, 0) == 0;
+    out += ours ? "# unshrunk " + std::string(body) + "\n" : "# " + std::string(body) + "\n";
+  }
+  return out;
+}
+
+std::string dim_text(const PointSet& p) { return std::to_string(p.dimension) + "D"; }
+
+int run_shrink(const Options& o) {
+  const std::string text = io::read_file(o.input);
+  const PointSet input = io::parse_points(text, io::display_name(o.input), io::is_node_file(o.input));
+  if (input.size() == 0) throw io::InputError(io::display_name(o.input) + ": no points: nothing to shrink");
+  if (o.dim && *o.dim != input.dimension)
+    throw UsageError(io::display_name(o.input) + " holds " + dim_text(input) + " points, not --dim " +
+                     std::to_string(*o.dim));
+  std::vector<fuzz::Misbehaviour> selftest;
+  if (const char* st = std::getenv(fuzz::kSelftestVariable)) {
+    selftest = fuzz::parse_selftest(st);
+    std::cerr << "dlab shrink: " << fuzz::kSelftestVariable << "=" << st
+              << " is set: deliberate failures are injected (CASE 0: every test; a test of dlab shrink)\n";
+  }
+  const std::string pair_text = o.pair.algo_name() + " x " + o.pair.kernel;
+  const fuzz::ChildOracle oracle(o.pair, o.order_seed, o.limits, selftest);
+  const fuzz::Observed first = oracle.observe(input);
+  const fuzz::FailureClass seen{first.outcome, first.kind};
+  if (!fuzz::is_failure(first.outcome))
+    throw UsageError(io::display_name(o.input) + " does not fail: " + pair_text + " gives " + first.outcome +
+                     ": nothing to shrink");
+  if ((o.outcome && *o.outcome != first.outcome) || (o.kind && *o.kind != first.kind))
+    throw UsageError(io::display_name(o.input) + ": " + pair_text + " gives " + seen.describe() + ", not " +
+                     fuzz::FailureClass{o.outcome.value_or(first.outcome), o.kind.value_or(first.kind)}.describe() +
+                     ": nothing to shrink");
+  fuzz::FailureClass target = seen;
+  if (o.any_kind) target.kind.reset();
+
+  // Opened before the long part, after INPUT is read (OUT may be INPUT).
+  std::ofstream file;
+  if (o.output != "-") {
+    file.open(o.output, std::ios::binary);
+    if (!file) throw UsageError("cannot write '" + o.output + "'");
+  }
+  fuzz::ShrinkLimits limits;
+  limits.max_tests = o.max_tests - 2;  // the run of INPUT and the final one count
+  const fuzz::ShrinkReport r =
+      fuzz::shrink(input, [&](const PointSet& p) { return target.matches(oracle.observe(p)); }, limits);
+  const fuzz::Observed last = oracle.observe(r.points);  // a run outside the shrinker's loop, for its detail
+  const std::uint64_t tests = 1 + r.tests + 1;
+  fuzz::ShrinkReport shown = r;
+  shown.tests = tests;
+
+  std::ostringstream out;
+  out << "# dlab shrink: " << pair_text << ", " << dim_text(input) << ": " << target.describe() << "\n"
+      << "# shrunk: yes: " << fuzz::describe(shown) << "\n"
+      << "# input: " << io::display_name(o.input) << "\n"
+      << "# detail: " << last.detail << "\n"
+      << "# replay: dlab triangulate " << (o.output == "-" ? "FILE" : o.output)
+      << fuzz::triangulate_options(o.pair, o.order_seed) << "\n"
+      << input_comments(text);
+  io::write_points(out, r.points, io::FloatFormat::hex);
+  std::ostream& dest = o.output == "-" ? std::cout : file;
+  dest << out.str();
+  if (!dest.flush()) throw UsageError("error writing '" + o.output + "'");
+  std::cerr << "dlab shrink: " << pair_text << ", " << target.describe() << ": " << fuzz::describe(shown) << "\n";
+  if (!target.matches(last)) {
+    std::cerr << "dlab shrink: the shrunk set gave " << fuzz::FailureClass{last.outcome, last.kind}.describe()
+              << " when run again, not " << target.describe() << " (a flaky failure?)\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int cmd_shrink(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--help") {
+      std::cout << kShrinkHelp;
+      return 0;
+    }
+  try {
+    return run_shrink(parse(argc, argv));
+  } catch (const UsageError& e) {
+    std::cerr << "dlab shrink: " << e.what() << "\n";
+    return 2;
+  } catch (const io::InputError& e) {
+    std::cerr << "dlab shrink: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace dlab::cli
