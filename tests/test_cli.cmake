@@ -571,6 +571,65 @@ endforeach()
 dlab_case(flip_kernel_unknown RC 2 ERR "unknown kernel 'quad'" ARGS flip kite.txt kite_bad.txt --kernel quad)
 dlab_case(flip_stats_unwritable RC 2 ERR "cannot write '${WORK}/no/such/dir/f.json'" ARGS flip kite.txt kite_bad.txt --stats "${WORK}/no/such/dir/f.json")
 
+# ---- dlab shrink: a failing set -> a smaller one with the same failure --------
+# Case 24 of `dlab fuzz --kernel float,epsilon --algo lawson,bowyer-watson --gen mix
+# --cases 2000` (seed 0): lawson x float, brio order seeded as below, is not Delaunay
+# on these 20 near-duplicate points. The shrunk set is re-run by dlab triangulate.
+set(lawson_seed 7275081841566860385)
+set(lawson_pair --algo lawson --kernel float --seed ${lawson_seed})
+file(WRITE "${WORK}/lawson_float.txt" "# a comment of the input, kept\n# replay: the input's own, renamed\n0x1.d74d6f5bc9035p-2 0x1.c9e6033d61ee9p-3\n0x1.d05cdf97733e1p-1 0x1.620f3ed408d3cp-1\n0x1.75da8bf216ap-1 0x1.3556b7e0111d4p-1\n0x1.d05cdf97733e2p-1 0x1.620f3ed408d3cp-1\n0x1.49b4c043f0da4p-1 0x1.06f2daebfd71bp-1\n0x1.537bd68ff2cep-4 0x1.ddfca1ff600fp-1\n0x1.d05cdf97733dfp-1 0x1.620f3ed408d39p-1\n0x1.537bd68ff2cdep-4 0x1.ddfca1ff600eep-1\n0x1.75da8bf2169fdp-1 0x1.3556b7e0111d7p-1\n0x1.75da8bf2169fcp-1 0x1.3556b7e0111d4p-1\n0x1.d74d6f5bc9039p-2 0x1.c9e6033d61eebp-3\n0x1.d74d6f5bc9039p-2 0x1.c9e6033d61eeep-3\n0x1.d74d6f5bc9038p-2 0x1.c9e6033d61ee9p-3\n0x1.75da8bf2169fep-1 0x1.3556b7e0111d8p-1\n0x1.49b4c043f0da6p-1 0x1.06f2daebfd71ap-1\n0x1.d74d6f5bc903bp-2 0x1.c9e6033d61eefp-3\n0x1.d05cdf97733ep-1 0x1.620f3ed408d38p-1\n0x1.537bd68ff2ce2p-4 0x1.ddfca1ff600f2p-1\n0x1.537bd68ff2ce1p-4 0x1.ddfca1ff600efp-1\n0x1.d74d6f5bc9037p-2 0x1.c9e6033d61eeap-3\n")
+dlab_case(shrink_input_fails RC 1 ERR "^dlab triangulate: not-delaunay: " ARGS triangulate lawson_float.txt ${lawson_pair} --validate)
+dlab_case(shrink RC 0 OUT "^$"
+          ERR "^dlab shrink: lawson x float, not-delaunay: 20 points, [0-9]+ significant bits -> [2-9] points, [0-9]+ significant bits; [0-9]+ tests\n$"
+          ARGS shrink lawson_float.txt ${lawson_pair} -o shrunk1.txt)
+read_output(shrunk1 "${WORK}/shrunk1.txt")
+file(STRINGS "${WORK}/shrunk1.txt" shrunk1_points REGEX "^[^#]")
+list(LENGTH shrunk1_points shrunk1_n)
+set(shrunk1_header "^# dlab shrink: lawson x float, 2D: not-delaunay\n# shrunk: yes: 20 points, [0-9]+ significant bits -> ${shrunk1_n} points, [0-9]+ significant bits; [0-9]+ tests\n# input: lawson_float.txt\n# detail: [0-9]+ facets? not locally Delaunay[^\n]*\n# replay: dlab triangulate shrunk1.txt --algo lawson --kernel float --seed ${lawson_seed} --validate\n# a comment of the input, kept\n# unshrunk replay: the input's own, renamed\n-?0x")
+if(NOT shrunk1 MATCHES "${shrunk1_header}" OR shrunk1_n GREATER_EQUAL 20 OR shrunk1_n LESS 3)
+  message(STATUS "FAIL shrink_file: ${shrunk1_n} points, want 3..19 and the header ${shrunk1_header}:\n${shrunk1}")
+  math(EXPR failures "${failures} + 1")
+else()
+  message(STATUS "ok   shrink_file")
+endif()
+dlab_case(shrink_replay RC 1 ERR "^dlab triangulate: not-delaunay: " ARGS triangulate shrunk1.txt ${lawson_pair} --validate)
+# Deterministic: a second run writes the same bytes.
+dlab_case(shrink_again RC 0 ARGS shrink lawson_float.txt ${lawson_pair} -o shrunk2.txt)
+file(READ "${WORK}/shrunk2.txt" shrunk2)
+string(REPLACE "shrunk2.txt" "shrunk1.txt" shrunk2 "${shrunk2}")
+if(NOT shrunk2 STREQUAL shrunk1)
+  message(STATUS "FAIL shrink_deterministic: two runs differ:\n${shrunk1}\n${shrunk2}")
+  math(EXPR failures "${failures} + 1")
+else()
+  message(STATUS "ok   shrink_deterministic")
+endif()
+dlab_case(shrink_stdout RC 0 OUT "^# dlab shrink: .*\n# replay: dlab triangulate FILE --algo lawson --kernel float --seed ${lawson_seed} --validate\n"
+          ARGS shrink lawson_float.txt ${lawson_pair} --outcome not-delaunay --any-kind)
+# A small budget: stops early, says so, and what it wrote still fails the same way.
+dlab_case(shrink_budget RC 0 ERR "; 10 tests; test budget spent\n$" ARGS shrink lawson_float.txt ${lawson_pair} --max-tests 10 -o shrunk3.txt)
+dlab_case(shrink_budget_replay RC 1 ERR "^dlab triangulate: not-delaunay: " ARGS triangulate shrunk3.txt ${lawson_pair} --validate)
+# Bad input and usage: exit 2, a clear message.
+dlab_case(shrink_help RC 0 OUT "^usage: dlab shrink INPUT --algo A --kernel K.*Zeller and Hildebrandt.*Example:" ARGS shrink --help)
+dlab_case(shrink_in_usage RC 0 OUT "dlab shrink INPUT --algo A --kernel K" ARGS --help)
+dlab_case(shrink_missing RC 2 ERR "^dlab shrink: no_such.txt: cannot read" ARGS shrink no_such.txt ${lawson_pair})
+dlab_case(shrink_nan RC 2 ERR "^dlab shrink: nan.txt:2: NaN coordinate 'nan'" ARGS shrink nan.txt ${lawson_pair})
+dlab_case(shrink_not_failing RC 2 ERR "^dlab shrink: square.txt does not fail: bowyer-watson x adaptive gives ok: nothing to shrink\n$"
+          ARGS shrink square.txt --algo bowyer-watson --kernel adaptive)
+dlab_case(shrink_lower RC 2 ERR "does not fail: lawson x float gives lower-dimensional: nothing to shrink" ARGS shrink collinear.txt --algo lawson --kernel float)
+dlab_case(shrink_bad_outcome RC 2 ERR "^dlab shrink: --outcome must be a failure class: not-delaunay, invalid, reported, differs, crash, timeout or out-of-memory, not 'broken'\n$"
+          ARGS shrink lawson_float.txt ${lawson_pair} --outcome broken)
+dlab_case(shrink_ok_outcome RC 2 ERR "--outcome must be a failure class.* not 'ok'" ARGS shrink lawson_float.txt ${lawson_pair} --outcome ok)
+dlab_case(shrink_other_outcome RC 2 ERR "^dlab shrink: lawson_float.txt: lawson x float gives not-delaunay, not invalid: nothing to shrink\n$"
+          ARGS shrink lawson_float.txt ${lawson_pair} --outcome invalid)
+dlab_case(shrink_other_kind RC 2 ERR "gives not-delaunay, not not-delaunay \\(orientation\\): nothing to shrink" ARGS shrink lawson_float.txt ${lawson_pair} --kind orientation)
+dlab_case(shrink_no_pair RC 2 ERR "give the pair that fails: --algo A --kernel K" ARGS shrink lawson_float.txt)
+dlab_case(shrink_bad_kernel RC 2 ERR "quad" ARGS shrink lawson_float.txt --algo lawson --kernel quad)
+dlab_case(shrink_dim RC 2 ERR "lawson_float.txt holds 2D points, not --dim 3" ARGS shrink lawson_float.txt ${lawson_pair} --dim 3)
+dlab_case(shrink_kind_any RC 2 ERR "--kind and --any-kind exclude each other" ARGS shrink lawson_float.txt ${lawson_pair} --kind x --any-kind)
+dlab_case(shrink_max_tests RC 2 ERR "--max-tests must be at least 2" ARGS shrink lawson_float.txt ${lawson_pair} --max-tests 1)
+dlab_case(shrink_policy RC 2 ERR "--policy must be sos or strict, not 'fuzzy'" ARGS shrink lawson_float.txt ${lawson_pair} --policy fuzzy)
+dlab_case(shrink_unwritable RC 2 ERR "cannot write '${WORK}/no/such/dir/x.txt'" ARGS shrink lawson_float.txt ${lawson_pair} -o "${WORK}/no/such/dir/x.txt")
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} CLI case(s) failed")
 endif()
