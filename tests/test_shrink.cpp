@@ -233,6 +233,17 @@ TEST_CASE("shrink: every set kept fails, and the budget bounds the tests", "[shr
   CHECK(close_pair(b.points));
 }
 
+TEST_CASE("shrink: the same failure is the same class and, unless any kind will do, the same kind", "[shrink]") {
+  const Observed hull{"invalid", "hull-coverage", "1 reflex boundary ridge"};
+  CHECK(FailureClass{"invalid", "hull-coverage"}.matches(hull));
+  CHECK_FALSE(FailureClass{"invalid", "orientation"}.matches(hull));
+  CHECK_FALSE(FailureClass{"reported", "hull-coverage"}.matches(hull));
+  CHECK(FailureClass{"invalid", std::nullopt}.matches(hull));
+  CHECK_FALSE(FailureClass{"not-delaunay", std::nullopt}.matches(hull));
+  CHECK(FailureClass{"invalid", std::nullopt}.describe() == "invalid (any kind)");
+  CHECK(FailureClass{"not-delaunay", ""}.describe() == "not-delaunay");
+}
+
 TEST_CASE("shrink: a real float failure, in child processes, shrinks and still fails", "[shrink]") {
   const Pair pair = make_pair("lawson", "float");
   const ChildOracle oracle(pair, kLawsonOrderSeed, Limits{});
