@@ -3,6 +3,7 @@
 // child-process oracle); this file parses the command line and writes the
 // result with its header.
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -36,7 +37,8 @@ const char* const kShrinkHelp =
     "repeated until nothing changes. Deterministic: same input and options, same output.\n"
     "INPUT: any point file dlab reads, e.g. a campaign's DIR/failures/*.txt ('-': stdin).\n"
     "The pair runs as dlab triangulate runs it (A, K, --policy, --order, --seed: same meaning and\n"
-    "defaults; give the --seed of the failure's replay line). Every test runs in a child process\n"
+    "defaults; without --seed, the --seed of INPUT's '# replay: ... dlab triangulate ...' comment,\n"
+    "as a campaign's failure files and dlab shrink's output have, else 0). Every test runs in a child process\n"
     "under dlab fuzz's limits and classification (--timeout SEC CPU time, 10; --memory MIB, 4096),\n"
     "so crash, timeout and out-of-memory shrink too.\n"
     "The same failure: the outcome class INPUT gives (--outcome CLASS: check that it is that one:\n"
@@ -53,8 +55,9 @@ const char* const kShrinkHelp =
     "Example:\n"
     "  dlab fuzz --algo lawson --kernel float --gen near-degenerate --cases 200 --out c1\n"
     "  dlab shrink c1/failures/lawson.float.2d.not-delaunay.txt --algo lawson --kernel float \\\n"
-    "      --seed SEED -o small.txt     (SEED: the --seed of the file's replay line)\n"
+    "      -o small.txt\n"
     "  dlab triangulate small.txt --algo lawson --kernel float --seed SEED --validate\n"
+    "      (SEED: the failure file's; small.txt's '# replay:' line is this command)\n"
     "Exit status: 0 shrunk; 1 the shrunk set did not fail the same way when run again (a flaky\n"
     "failure, e.g. a timeout near its limit); 2 bad usage or INPUT (FILE:LINE: problem), or an\n"
     "INPUT on which the pair does not fail (or not as --outcome / --kind say): nothing to shrink.\n";
@@ -62,7 +65,7 @@ const char* const kShrinkHelp =
 struct Options {
   std::string input, output = "-";
   fuzz::Pair pair;
-  std::uint64_t order_seed = 0;
+  std::optional<std::uint64_t> order_seed;  // --seed
   std::optional<std::string> outcome, kind;
   bool any_kind = false;
   fuzz::Limits limits;
@@ -93,7 +96,7 @@ Options parse(int argc, char** argv) {
   const std::string& ord = o.pair.order;
   if (ord != "input" && ord != "random" && ord != "brio" && ord != "hilbert")
     throw UsageError("--order must be input, random, brio or hilbert, not '" + ord + "'");
-  o.order_seed = a.u64("--seed", 0);
+  if (a.get("--seed")) o.order_seed = a.u64("--seed", 0);
   o.outcome = a.get("--outcome");
   if (o.outcome && (!fuzz::is_failure(*o.outcome) || std::find(std::begin(fuzz::kOutcomeOrder),
                                                                std::end(fuzz::kOutcomeOrder),
@@ -135,6 +138,29 @@ std::string input_comments(std::string_view text) {
   return out;
 }
 
+// The --seed of INPUT's "# replay: ... dlab triangulate ... --seed N ..." line, if it has one.
+std::optional<std::uint64_t> replay_seed(std::string_view text) {
+  for (std::size_t pos = 0; pos < text.size();) {
+    const std::size_t nl = std::min(text.find('\n', pos), text.size());
+    std::string_view l = text.substr(pos, nl - pos);
+    pos = nl + 1;
+    const std::size_t hash = l.find_first_not_of(" \t");
+    if (hash == l.npos || l[hash] != '#') continue;
+    l.remove_prefix(hash + 1);
+    while (!l.empty() && l.front() == ' ') l.remove_prefix(1);
+    if (l.rfind("replay: ", 0) != 0) continue;
+    const std::size_t tri = l.find("dlab triangulate ");
+    const std::size_t seed = tri == l.npos ? l.npos : l.find(" --seed ", tri);
+    if (seed == l.npos) continue;
+    const std::string_view digits = l.substr(seed + 8);
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    if (ec == std::errc() && end != digits.data() && (end == digits.data() + digits.size() || *end == ' '))
+      return v;
+  }
+  return std::nullopt;
+}
+
 std::string dim_text(const PointSet& p) { return std::to_string(p.dimension) + "D"; }
 
 int run_shrink(const Options& o) {
@@ -151,7 +177,15 @@ int run_shrink(const Options& o) {
               << " is set: deliberate failures are injected (CASE 0: every test; a test of dlab shrink)\n";
   }
   const std::string pair_text = o.pair.algo_name() + " x " + o.pair.kernel;
-  const fuzz::ChildOracle oracle(o.pair, o.order_seed, o.limits, selftest);
+  std::uint64_t order_seed = 0;
+  if (o.order_seed) {
+    order_seed = *o.order_seed;
+  } else if (auto s = replay_seed(text)) {
+    order_seed = *s;
+    std::cerr << "dlab shrink: --seed " << order_seed << ", from the replay line of " << io::display_name(o.input)
+              << "\n";
+  }
+  const fuzz::ChildOracle oracle(o.pair, order_seed, o.limits, selftest);
   const fuzz::Observed first = oracle.observe(input);
   const fuzz::FailureClass seen{first.outcome, first.kind};
   if (!fuzz::is_failure(first.outcome))
@@ -185,7 +219,7 @@ int run_shrink(const Options& o) {
       << "# input: " << io::display_name(o.input) << "\n"
       << "# detail: " << last.detail << "\n"
       << "# replay: dlab triangulate " << (o.output == "-" ? "FILE" : o.output)
-      << fuzz::triangulate_options(o.pair, o.order_seed) << "\n"
+      << fuzz::triangulate_options(o.pair, order_seed) << "\n"
       << input_comments(text);
   io::write_points(out, r.points, io::FloatFormat::hex);
   std::ostream& dest = o.output == "-" ? std::cout : file;

@@ -577,7 +577,7 @@ dlab_case(flip_stats_unwritable RC 2 ERR "cannot write '${WORK}/no/such/dir/f.js
 # on these 20 near-duplicate points. The shrunk set is re-run by dlab triangulate.
 set(lawson_seed 7275081841566860385)
 set(lawson_pair --algo lawson --kernel float --seed ${lawson_seed})
-file(WRITE "${WORK}/lawson_float.txt" "# a comment of the input, kept\n# replay: the input's own, renamed\n0x1.d74d6f5bc9035p-2 0x1.c9e6033d61ee9p-3\n0x1.d05cdf97733e1p-1 0x1.620f3ed408d3cp-1\n0x1.75da8bf216ap-1 0x1.3556b7e0111d4p-1\n0x1.d05cdf97733e2p-1 0x1.620f3ed408d3cp-1\n0x1.49b4c043f0da4p-1 0x1.06f2daebfd71bp-1\n0x1.537bd68ff2cep-4 0x1.ddfca1ff600fp-1\n0x1.d05cdf97733dfp-1 0x1.620f3ed408d39p-1\n0x1.537bd68ff2cdep-4 0x1.ddfca1ff600eep-1\n0x1.75da8bf2169fdp-1 0x1.3556b7e0111d7p-1\n0x1.75da8bf2169fcp-1 0x1.3556b7e0111d4p-1\n0x1.d74d6f5bc9039p-2 0x1.c9e6033d61eebp-3\n0x1.d74d6f5bc9039p-2 0x1.c9e6033d61eeep-3\n0x1.d74d6f5bc9038p-2 0x1.c9e6033d61ee9p-3\n0x1.75da8bf2169fep-1 0x1.3556b7e0111d8p-1\n0x1.49b4c043f0da6p-1 0x1.06f2daebfd71ap-1\n0x1.d74d6f5bc903bp-2 0x1.c9e6033d61eefp-3\n0x1.d05cdf97733ep-1 0x1.620f3ed408d38p-1\n0x1.537bd68ff2ce2p-4 0x1.ddfca1ff600f2p-1\n0x1.537bd68ff2ce1p-4 0x1.ddfca1ff600efp-1\n0x1.d74d6f5bc9037p-2 0x1.c9e6033d61eeap-3\n")
+file(WRITE "${WORK}/lawson_float.txt" "# a comment of the input, kept\n# replay: dlab gen near-duplicates | dlab triangulate - --algo lawson --kernel float --seed ${lawson_seed} --validate\n0x1.d74d6f5bc9035p-2 0x1.c9e6033d61ee9p-3\n0x1.d05cdf97733e1p-1 0x1.620f3ed408d3cp-1\n0x1.75da8bf216ap-1 0x1.3556b7e0111d4p-1\n0x1.d05cdf97733e2p-1 0x1.620f3ed408d3cp-1\n0x1.49b4c043f0da4p-1 0x1.06f2daebfd71bp-1\n0x1.537bd68ff2cep-4 0x1.ddfca1ff600fp-1\n0x1.d05cdf97733dfp-1 0x1.620f3ed408d39p-1\n0x1.537bd68ff2cdep-4 0x1.ddfca1ff600eep-1\n0x1.75da8bf2169fdp-1 0x1.3556b7e0111d7p-1\n0x1.75da8bf2169fcp-1 0x1.3556b7e0111d4p-1\n0x1.d74d6f5bc9039p-2 0x1.c9e6033d61eebp-3\n0x1.d74d6f5bc9039p-2 0x1.c9e6033d61eeep-3\n0x1.d74d6f5bc9038p-2 0x1.c9e6033d61ee9p-3\n0x1.75da8bf2169fep-1 0x1.3556b7e0111d8p-1\n0x1.49b4c043f0da6p-1 0x1.06f2daebfd71ap-1\n0x1.d74d6f5bc903bp-2 0x1.c9e6033d61eefp-3\n0x1.d05cdf97733ep-1 0x1.620f3ed408d38p-1\n0x1.537bd68ff2ce2p-4 0x1.ddfca1ff600f2p-1\n0x1.537bd68ff2ce1p-4 0x1.ddfca1ff600efp-1\n0x1.d74d6f5bc9037p-2 0x1.c9e6033d61eeap-3\n")
 dlab_case(shrink_input_fails RC 1 ERR "^dlab triangulate: not-delaunay: " ARGS triangulate lawson_float.txt ${lawson_pair} --validate)
 dlab_case(shrink RC 0 OUT "^$"
           ERR "^dlab shrink: lawson x float, not-delaunay: 20 points, [0-9]+ significant bits -> [2-9] points, [0-9]+ significant bits; [0-9]+ tests\n$"
@@ -585,7 +585,7 @@ dlab_case(shrink RC 0 OUT "^$"
 read_output(shrunk1 "${WORK}/shrunk1.txt")
 file(STRINGS "${WORK}/shrunk1.txt" shrunk1_points REGEX "^[^#]")
 list(LENGTH shrunk1_points shrunk1_n)
-set(shrunk1_header "^# dlab shrink: lawson x float, 2D: not-delaunay\n# shrunk: yes: 20 points, [0-9]+ significant bits -> ${shrunk1_n} points, [0-9]+ significant bits; [0-9]+ tests\n# input: lawson_float.txt\n# detail: [0-9]+ facets? not locally Delaunay[^\n]*\n# replay: dlab triangulate shrunk1.txt --algo lawson --kernel float --seed ${lawson_seed} --validate\n# a comment of the input, kept\n# unshrunk replay: the input's own, renamed\n-?0x")
+set(shrunk1_header "^# dlab shrink: lawson x float, 2D: not-delaunay\n# shrunk: yes: 20 points, [0-9]+ significant bits -> ${shrunk1_n} points, [0-9]+ significant bits; [0-9]+ tests\n# input: lawson_float.txt\n# detail: [0-9]+ facets? not locally Delaunay[^\n]*\n# replay: dlab triangulate shrunk1.txt --algo lawson --kernel float --seed ${lawson_seed} --validate\n# a comment of the input, kept\n# unshrunk replay: dlab gen near-duplicates [|] dlab triangulate - --algo lawson --kernel float --seed ${lawson_seed} --validate\n-?0x")
 if(NOT shrunk1 MATCHES "${shrunk1_header}" OR shrunk1_n GREATER_EQUAL 20 OR shrunk1_n LESS 3)
   message(STATUS "FAIL shrink_file: ${shrunk1_n} points, want 3..19 and the header ${shrunk1_header}:\n${shrunk1}")
   math(EXPR failures "${failures} + 1")
@@ -602,6 +602,14 @@ if(NOT shrunk2 STREQUAL shrunk1)
   math(EXPR failures "${failures} + 1")
 else()
   message(STATUS "ok   shrink_deterministic")
+endif()
+# Without --seed, the seed of INPUT's replay line: the same result.
+dlab_case(shrink_seed_from_input RC 0 ERR "^dlab shrink: --seed ${lawson_seed}, from the replay line of lawson_float.txt\n"
+          ARGS shrink lawson_float.txt --algo lawson --kernel float -o shrunk4.txt)
+file(STRINGS "${WORK}/shrunk4.txt" shrunk4_points REGEX "^[^#]")
+if(NOT shrunk4_points STREQUAL shrunk1_points)
+  message(STATUS "FAIL shrink_seed_points: ${shrunk4_points} differ from ${shrunk1_points}")
+  math(EXPR failures "${failures} + 1")
 endif()
 dlab_case(shrink_stdout RC 0 OUT "^# dlab shrink: .*\n# replay: dlab triangulate FILE --algo lawson --kernel float --seed ${lawson_seed} --validate\n"
           ARGS shrink lawson_float.txt ${lawson_pair} --outcome not-delaunay --any-kind)
