@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -38,9 +39,9 @@ const char* const kShrinkHelp =
     "INPUT: any point file dlab reads, e.g. a campaign's DIR/failures/*.txt ('-': stdin).\n"
     "The pair runs as dlab triangulate runs it (A, K, --policy, --order, --seed: same meaning and\n"
     "defaults; without --seed, the --seed of INPUT's '# replay: ... dlab triangulate ...' comment,\n"
-    "as a campaign's failure files and dlab shrink's output have, else 0). Every test runs in a child process\n"
-    "under dlab fuzz's limits and classification (--timeout SEC CPU time, 10; --memory MIB, 4096),\n"
-    "so crash, timeout and out-of-memory shrink too.\n"
+    "as a campaign's failure files and dlab shrink's output have, else 0). Every test runs in a\n"
+    "child process under dlab fuzz's limits and classification (--timeout SEC CPU time, 10;\n"
+    "--memory MIB, 4096), so crash, timeout and out-of-memory shrink too.\n"
     "The same failure: the outcome class INPUT gives (--outcome CLASS: check that it is that one:\n"
     "not-delaunay, invalid, reported, differs, crash, timeout, out-of-memory) and its kind -- the\n"
     "invalid check group, the reported message with numbers as '#', the crash's signal (--kind\n"
@@ -115,12 +116,9 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-// INPUT's comment lines, for the output: a line whose key the header writes
-// ("replay: ...") is kept as "unshrunk KEY: ..." so that the header's own is the
-// only one a reader (dlab corpus add) finds; INPUT's "shrunk:" line is dropped.
-std::string input_comments(std::string_view text) {
-  static const char* const keys[] = {"dlab shrink:", "input:", "detail:", "replay:", "replay the points below:"};
-  std::string out;
+// The comment lines of INPUT's text, each without its '#' and leading blanks.
+std::vector<std::string_view> comments(std::string_view text) {
+  std::vector<std::string_view> out;
   for (std::size_t pos = 0; pos < text.size();) {
     const std::size_t nl = std::min(text.find('\n', pos), text.size());
     std::string_view l = text.substr(pos, nl - pos);
@@ -128,8 +126,20 @@ std::string input_comments(std::string_view text) {
     if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
     const std::size_t hash = l.find_first_not_of(" \t");
     if (hash == l.npos || l[hash] != '#') continue;
-    std::string_view body = l.substr(hash + 1);
-    while (!body.empty() && body.front() == ' ') body.remove_prefix(1);
+    l.remove_prefix(hash + 1);
+    while (!l.empty() && l.front() == ' ') l.remove_prefix(1);
+    out.push_back(l);
+  }
+  return out;
+}
+
+// INPUT's comment lines, for the output: a line whose key the header writes
+// ("replay: ...") is kept as "unshrunk KEY: ..." so that the header's own is the
+// only one a reader (dlab corpus add) finds; INPUT's "shrunk:" line is dropped.
+std::string input_comments(std::string_view text) {
+  static const char* const keys[] = {"dlab shrink:", "input:", "detail:", "replay:", "replay the points below:"};
+  std::string out;
+  for (std::string_view body : comments(text)) {
     if (body.rfind("shrunk:", 0) == 0) continue;
     bool ours = false;
     for (const char* k : keys) ours = ours || body.rfind(k, 0) == 0;
@@ -140,14 +150,7 @@ std::string input_comments(std::string_view text) {
 
 // The --seed of INPUT's "# replay: ... dlab triangulate ... --seed N ..." line, if it has one.
 std::optional<std::uint64_t> replay_seed(std::string_view text) {
-  for (std::size_t pos = 0; pos < text.size();) {
-    const std::size_t nl = std::min(text.find('\n', pos), text.size());
-    std::string_view l = text.substr(pos, nl - pos);
-    pos = nl + 1;
-    const std::size_t hash = l.find_first_not_of(" \t");
-    if (hash == l.npos || l[hash] != '#') continue;
-    l.remove_prefix(hash + 1);
-    while (!l.empty() && l.front() == ' ') l.remove_prefix(1);
+  for (std::string_view l : comments(text)) {
     if (l.rfind("replay: ", 0) != 0) continue;
     const std::size_t tri = l.find("dlab triangulate ");
     const std::size_t seed = tri == l.npos ? l.npos : l.find(" --seed ", tri);

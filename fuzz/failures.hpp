@@ -41,7 +41,8 @@ struct Signature {
 // out-of-memory (each of their tests may take the whole limit), so shrinking
 // stays small beside a campaign: it runs once per new signature. A failure that
 // does not show again in a fresh child (e.g. a DLAB_FUZZ_SELFTEST one) is
-// written as generated. Deterministic, so a merged campaign writes the same files.
+// written as generated. Deterministic where the pair's outcomes are (timeouts
+// depend on the machine), so a merged campaign writes the same files.
 inline constexpr std::uint64_t kCampaignShrinkTests = 400;
 inline constexpr std::uint64_t kCampaignShrinkSlowTests = 12;
 struct ShrunkFailure {
