@@ -78,8 +78,9 @@ void run_schedule(const Work& w, const Schedule& s, const std::function<void(con
         std::tie(span, alone) = retry.front();
         retry.pop_front();
       } else if (next_case < s.end && (!s.deadline || now < *s.deadline)) {
-        const std::uint64_t e = std::min(s.end, next_case + batch);
+        const std::uint64_t e = s.single ? next_case + 1 : std::min(s.end, next_case + batch);
         span = {next_case * P, e * P};
+        alone = s.single && P == 1;
         next_case = e;
       } else {
         break;

@@ -29,6 +29,9 @@ struct Schedule {
   std::uint64_t end = 0;    // one past the last (UINT64_MAX: until the deadline)
   std::optional<std::chrono::steady_clock::time_point> deadline;  // no new batch after it
   double wall_seconds = 0;  // a child that writes nothing for this long is killed (timeout)
+  // Spans of one case x pair (P = 1, batch 1) whose death is their record at
+  // once, without the re-run alone (dlab shrink: a hang then costs one limit, not two).
+  bool single = false;
 };
 
 // Calls on_case for each finished case, in position order, and tick about

@@ -32,6 +32,7 @@ Observed ChildOracle::observe(const PointSet& points) const {
   w.timing = false;
   Schedule s;
   s.end = 1;
+  s.single = true;
   s.wall_seconds = 10 * limits_.cpu_seconds + 10;  // a campaign's watchdog
   std::string line;
   run_schedule(w, s, [&](const CaseDone& d) { line = d.lines; }, [] {});
