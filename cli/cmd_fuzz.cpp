@@ -37,7 +37,8 @@ const char* const kFuzzHelp =
     "batch whose child dies is continued, the culprit re-run alone to name it.\n"
     "Writes DIR/campaign.json, DIR/results.jsonl (one JSON line per case x pair), DIR/summary.txt\n"
     "(also printed: failure rate per algorithm x kernel x generator with a 95% Wilson interval) and\n"
-    "DIR/failures/ (one point file per new failure signature, with the command that replays it).\n"
+    "DIR/failures/ (one point file per new failure signature, shrunk as dlab shrink does, at most\n"
+    "400 tests each, 12 for timeout and out-of-memory; with the commands that replay it).\n"
     "An interrupted campaign resumes where it stopped when run again with the same options.\n"
     "Exit status: 0; 1 if an exact pair (adaptive, integer, mp; George only with his exact sphere)\n"
     "gave anything but ok or lower-dimensional; 2 bad usage or an unusable DIR.\n";
