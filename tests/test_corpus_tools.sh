@@ -55,6 +55,27 @@ grep -qx "$LATTICE: bowyer-watson mp expected ok, got differs (.*perturbed refer
   fail "differs: $(cat differs.out)"
 grep -q 'deliberate failures are injected' differs.err || fail "differs: no warning about DLAB_FUZZ_SELFTEST"
 
+# ---- order-seed: every pair runs with the case's brio seed ------------------
+# (brio shuffles only from 64 points on; on this set lawson x float leaves a
+# number of non-Delaunay facets that depends on the seed.)
+"$DLAB" gen near-degenerate --dim 2 --n 100 --seed 2 --base lattice --ulps 1 > nd.txt
+facets() {
+  "$DLAB" triangulate nd.txt --algo lawson --kernel float --seed "$1" --validate 2>&1 > /dev/null |
+    sed -n 's/.*not-delaunay: \([0-9]*\) facets\{0,1\} not locally.*/\1/p'
+}
+f0=$(facets 0)
+f1=$(facets 1)
+[ -n "$f1" ] && [ "$f0" != "$f1" ] || fail "order-seed: precondition: lawson x float leaves '$f0' and '$f1' facets"
+mkdir seeded
+{ printf '# case: seeded\n# source: dlab gen\n# exercises: order-seed\n# dimension: 2\n# order-seed: 1\n'; cat nd.txt; } \
+  > seeded/seeded.pts
+expect_rc 0 seeded-add "$DLAB" corpus add seeded/seeded.pts --to seeded --replace
+grep -qx '# order-seed: 1' seeded/seeded.pts || fail "seeded-add: order-seed not kept"
+sed -i 's/^# expect: lawson float not-delaunay$/# expect: lawson float ok/' seeded/seeded.pts
+expect_rc 1 seeded "$DLAB" corpus replay seeded
+grep -qx "seeded: lawson float expected ok, got not-delaunay ($f1 facets\{0,1\} not locally Delaunay .*)" seeded.out ||
+  fail "seeded: not the $f1 facets of --seed 1: $(cat seeded.out)"
+
 # ---- replay: bad input -> FILE:LINE: problem, exit 2 -------------------------
 # bad_header NAME LINE REGEX SED-SCRIPT: a copy of the square edited by SED-SCRIPT.
 bad_header() {
