@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -20,11 +21,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What the comment lines of a campaign's failure file (fuzz/failures.cpp) say.
+// What the comment lines of a campaign's failure file (fuzz/failures.cpp) say,
+// and of `dlab shrink`'s output (cli/cmd_shrink.cpp), which keeps its input's
+// lines, the replay command as "unshrunk replay:".
 struct FailureComments {
   std::string failure;  // "ALGO x KERNEL, 2D: OUTCOME (kind)"
-  std::string first_seen, replay;
-  bool shrunk = false;
+  std::string first_seen, replay, unshrunk_replay;
+  std::string shrunk;   // dlab shrink's "shrunk: yes: ..." (its description)
   std::optional<std::uint64_t> order_seed;  // the replay command's --seed
 };
 
@@ -44,20 +47,16 @@ FailureComments read_failure_comments(std::string_view text) {
     while (!l.empty() && l.front() == ' ') l.remove_prefix(1);
     if (auto v = after(l, "dlab fuzz failure: "); !v.empty()) f.failure = v;
     if (l.rfind("first seen in case ", 0) == 0) f.first_seen = l;
-    if (auto v = after(l, "shrunk: "); !v.empty()) f.shrunk = v.rfind("yes", 0) == 0;
+    if (auto v = after(l, "shrunk: yes: "); !v.empty()) f.shrunk = v;
+    if (auto v = after(l, "unshrunk replay: "); !v.empty()) f.unshrunk_replay = v;
     if (auto v = after(l, "replay: "); !v.empty()) {
       f.replay = v;
       // The insertion order's seed: the --seed given to dlab triangulate.
       const auto tri = v.find("dlab triangulate");
       const auto seed = tri == v.npos ? v.npos : v.find(" --seed ", tri);
-      if (seed != v.npos) {
-        std::uint64_t s = 0;
-        const char* p = v.data() + seed + 8;
-        const char* e = v.data() + v.size();
-        std::size_t digits = 0;
-        for (; p < e && *p >= '0' && *p <= '9' && digits < 20; ++p, ++digits) s = s * 10 + static_cast<std::uint64_t>(*p - '0');
-        if (digits > 0 && digits < 20) f.order_seed = s;
-      }
+      std::uint64_t s = 0;
+      if (seed != v.npos && std::from_chars(v.data() + seed + 8, v.data() + v.size(), s).ec == std::errc())
+        f.order_seed = s;
     }
   }
   return f;
@@ -76,9 +75,13 @@ CorpusCase case_from_input(const AddOptions& o) {
     if (c.points.size() == 0) throw io::InputError(shown + ": no points");
     c.dimension = c.points.dimension;
     const FailureComments f = read_failure_comments(text);
+    const std::string& replay = f.unshrunk_replay.empty() ? f.replay : f.unshrunk_replay;
     if (!f.first_seen.empty())
-      c.source = "dlab fuzz, " + f.first_seen + (f.replay.empty() ? "" : "; replay: " + f.replay);
-    if (!f.failure.empty()) c.exercises = "the " + f.failure + " failure found by dlab fuzz" + (f.shrunk ? ", shrunk" : "");
+      c.source = "dlab fuzz, " + f.first_seen + (replay.empty() ? "" : "; replay: " + replay) +
+                 (f.shrunk.empty() ? "" : "; then dlab shrink");
+    if (!f.failure.empty())
+      c.exercises = "the " + f.failure + " failure found by dlab fuzz" +
+                    (f.shrunk.empty() ? "" : ", shrunk (" + f.shrunk + ")");
     if (f.order_seed) c.order_seed = *f.order_seed;
     if (o.input != "-") c.name = fs::path(o.input).stem().string();
   }

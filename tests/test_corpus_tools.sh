@@ -150,6 +150,25 @@ else
   cmp -s first.pts "found/$stem.pts" || fail "add-failure: --replace wrote another file"
 fi
 
+# `dlab shrink`'s output keeps its input's comments, the campaign's replay as
+# "unshrunk replay:"; the order seed is its own replay's (here 2^64 - 1).
+{
+  echo "# dlab shrink: lawson x float, 2D: not-delaunay"
+  echo "# shrunk: yes: 9 points -> 4 points; 20 tests"
+  echo "# replay: dlab triangulate s.txt --algo lawson --kernel float --seed 18446744073709551615 --validate"
+  echo "# dlab fuzz failure: lawson x float, 2D: not-delaunay"
+  echo "# first seen in case 3 (case seed 5, campaign seed 7), lattice n=9"
+  echo "# unshrunk replay: dlab gen lattice --dim 2 --n 9 --seed 1 | dlab triangulate - --algo lawson --kernel float --seed 18446744073709551615 --validate"
+  grep -v '^#' base/$SQUARE.pts
+} > shrunk.txt
+mkdir shrunk
+expect_rc 0 add-shrunk "$DLAB" corpus add shrunk.txt --to shrunk
+grep -qx '# order-seed: 18446744073709551615' shrunk/shrunk.pts || fail "add-shrunk: order-seed: $(grep '^# order' shrunk/shrunk.pts)"
+grep -qx '# source: dlab fuzz, first seen in case 3 (case seed 5, campaign seed 7), lattice n=9; replay: dlab gen lattice .*; then dlab shrink' \
+  shrunk/shrunk.pts || fail "add-shrunk: source: $(grep '^# source' shrunk/shrunk.pts)"
+grep -qx '# exercises: the lawson x float, 2D: not-delaunay failure found by dlab fuzz, shrunk (9 points -> 4 points; 20 tests)' \
+  shrunk/shrunk.pts || fail "add-shrunk: exercises: $(grep '^# exercises' shrunk/shrunk.pts)"
+
 # ---- add: other inputs, refusals, bad usage ----------------------------------
 grep -v '^#' base/$SQUARE.pts > plain.txt
 mkdir new
