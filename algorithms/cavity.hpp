@@ -55,6 +55,13 @@ class Restar {
   std::uint32_t star(Mesh<D>& m, const std::vector<std::uint32_t>& cavity,
                      const std::vector<BoundaryRecord<D>>& records, std::string& error,
                      bool verify = false) {
+    // A cavity without boundary is the whole triangulation, ghosts included:
+    // no exact conflict test admits it (p is never in conflict with a ghost
+    // whose finite facet it lies strictly inside), inexact ones can.
+    if (records.empty()) {
+      error = "the cavity has no boundary (it swallowed the whole triangulation)";
+      return kNoNeighbour;
+    }
     // New simplices: cavity slots first, then fresh ones; link across the boundary.
     ids_.resize(records.size());
     std::uint32_t first = kNoNeighbour;

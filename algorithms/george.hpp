@@ -423,7 +423,7 @@ bool George<K, D>::insert(std::uint32_t i) {
 
   // (7) re-star.
   std::string err;
-  const std::uint32_t first = restar_.star(mesh_, cavity_, records_, err);
+  const std::uint32_t first = restar_.star(mesh_, cavity_, records_, err, !K::exact);
   if (!err.empty()) {
     fail("point " + std::to_string(i) + ": " + err);
     return false;

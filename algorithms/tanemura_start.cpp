@@ -158,7 +158,14 @@ StartFacet<D> find_start_facet(std::span<const Point<D>> pts, const std::vector<
     // resolves many directions even when b is an ulp from a (near-duplicates).
     double w = 0;
     for (int i = 0; i < 3; ++i) w = std::max({w, std::fabs(b[i] - a[i]), 0x1p-20 * std::fabs(a[i])});
-    if (!std::isfinite(w) || w == 0) w = 1;
+    // b - a overflows near the top binade: half of it is finite. (A fixed
+    // w = 1 was below an ulp of such an a, so every v moved along one axis
+    // only and every draw repeated the first plane.)
+    if (!std::isfinite(w)) {
+      w = 0;
+      for (int i = 0; i < 3; ++i) w = std::max({w, std::fabs(0.5 * b[i] - 0.5 * a[i]), 0x1p-20 * std::fabs(a[i])});
+    }
+    if (w == 0) w = 1;
     // Each rejected plane (a, b, v) is the plane of centres of one empty sphere
     // through a, b and two tied points off a circle with them: one per
     // Delaunay cell around the edge ab, so at most |ids| planes are bad. The
