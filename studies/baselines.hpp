@@ -13,6 +13,9 @@
 // `ok-so-far` run with classify_baseline(), which runs the exact validator
 // (algorithms/validate.hpp, orientation any) and gives `ok`,
 // `lower-dimensional`, `missing-points`, `invalid` or `not-delaunay`.
+// Timing: wall_seconds and cpu_seconds never include process start, file I/O
+// or validation; TetGen and Qhull time themselves with clock() (CPU time) only,
+// and both fields carry that number (baselines_tetgen.cpp, baselines_qhull.cpp).
 //
 // Tool names (README.md): cgal-epick, cgal-epeck, tetgen, qhull, scipy.
 // Executables can be overridden with environment variables (tests use them to
@@ -37,10 +40,10 @@ struct BaselineRun {
   // "reported" (the tool itself refused: Qhull's precision error, scipy's
   // QhullError, TetGen's error exit; `message` holds its first line),
   // "crash" (killed by a signal or an unexpected exit status / unreadable
-  // output), "timeout" (killed at the time limit), "lower-dimensional" (the
-  // tool says the input is degenerate in dimension, e.g. CGAL's dimension() < d).
+  // output), "timeout" (killed at the time limit), "skipped" (see `skipped`).
   // After classify_baseline(): "ok", "lower-dimensional", "missing-points",
-  // "invalid", "not-delaunay" replace "ok-so-far".
+  // "invalid", "not-delaunay" replace "ok-so-far"; "reported" on
+  // lower-dimensional input becomes "lower-dimensional" (the tool's message kept).
   std::string outcome;
   std::string message;       // one line, no newline; empty for ok
   double wall_seconds = 0;   // the tool's triangulation alone (see baselines.cpp per tool)
