@@ -47,7 +47,9 @@ const char* const kGenHelp =
     "                   (that are doubles) around +-2^51, +-2^52, +-2^53 (--exp fixes it) or 0\n"
     "                   (issue 17: half-integers in [2^51, 2^52) passed an integer test)\n"
     "  extreme-doubles  N distinct points of a grid whose axes hold the largest finite doubles,\n"
-    "                   the smallest subnormals (both signs) and 0\n";
+    "                   the smallest subnormals (both signs) and 0\n"
+    "  pdb-like         well-spaced points (a grid of --spacing, default 1.9, jittered by a quarter\n"
+    "                   of it) with coordinates printed as PDB's %8.3f and read back (Liu & Snoeyink 2005)\n";
 
 }  // namespace
 
@@ -56,7 +58,7 @@ int cmd_gen(int argc, char** argv) {
     const Args a = parse_args(argc, argv, 2,
                               {"-o", "--n", "--dim", "--seed", "--off", "--ulps", "--base",
                                "--clusters", "--sigma", "--copies", "--side", "--exp", "--set",
-                               "--lo", "--hi", "--step-exp", "--sign"},
+                               "--lo", "--hi", "--step-exp", "--sign", "--spacing"},
                               {"--decimal", "--hex", "--help"});
     if (a.has("--help")) {
       std::cout << kGenHelp;
@@ -90,6 +92,7 @@ int cmd_gen(int argc, char** argv) {
     o.set = a.get("--set").value_or(o.set);
     o.lo = a.real("--lo", o.lo);
     o.hi = a.real("--hi", o.hi);
+    o.spacing = a.real("--spacing", o.spacing);
 
     const PointSet ps = gen::generate(o);
     const auto fmt = a.has("--decimal") ? io::FloatFormat::decimal : io::FloatFormat::hex;

@@ -7,6 +7,8 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -382,6 +384,35 @@ std::vector<Point<D>> tiny(std::size_t n, std::uint64_t seed, int exp) {
   return pts;
 }
 
+template <int D>
+std::vector<Point<D>> pdb_like(std::size_t n, std::uint64_t seed, double spacing) {
+  if (!(spacing > 0) || spacing > 100) throw std::invalid_argument("pdb-like: --spacing must be in (0, 100]");
+  std::size_t m = 1;
+  const auto cells_of = [](std::size_t side) { return D == 2 ? side * side : side * side * side; };
+  while (cells_of(m) < n) ++m;
+  const std::size_t cells = cells_of(m);
+  if (static_cast<double>(m) * spacing + 50 >= 9999)
+    throw std::invalid_argument("pdb-like: the set does not fit PDB's 8.3f field (fewer points or a smaller --spacing)");
+  SplitMix64 rng(seed);
+  std::array<double, D> origin;
+  for (double& o : origin) o = rng.uniform(-50, 50);
+  std::vector<Point<D>> pts;
+  pts.reserve(n);
+  char buf[64];
+  for (std::size_t cell : choose(cells, n, rng)) {
+    Point<D> p;
+    for (int j = 0; j < D; ++j) {
+      const double index = static_cast<double>(cell % m);
+      cell /= m;
+      const double x = origin[j] + (index + 0.5 + rng.uniform(-0.25, 0.25)) * spacing;
+      std::snprintf(buf, sizeof buf, "%8.3f", x);  // PDB ATOM record, columns 31-54
+      p[j] = std::strtod(buf, nullptr);
+    }
+    pts.push_back(p);
+  }
+  return pts;
+}
+
 std::vector<Point2> kettner_grid(std::size_t side) {
   if (side == 0 || side > 4096) throw std::invalid_argument("kettner-grid: --side must be in 1..4096");
   std::vector<Point2> pts;
@@ -420,13 +451,14 @@ std::vector<std::string> generator_names() {
   return {"uniform",   "gaussian",       "clustered",       "lattice", "rotated-lattice",
           "cocircular", "cospherical",   "collinear",       "coplanar", "near-degenerate",
           "near-duplicates", "huge",     "tiny",            "kettner-grid", "kettner-hull",
-          "binade-lattice", "binade-doubles", "half-integers", "extreme-doubles"};
+          "binade-lattice", "binade-doubles", "half-integers", "extreme-doubles", "pdb-like"};
 }
 
 std::vector<std::string> degenerate_generator_names() {
   std::vector<std::string> out;
   for (const auto& g : generator_names())
-    if (g != "uniform" && g != "gaussian" && g != "clustered" && g != "huge" && g != "tiny") out.push_back(g);
+    if (g != "uniform" && g != "gaussian" && g != "clustered" && g != "huge" && g != "tiny" && g != "pdb-like")
+      out.push_back(g);
   return out;
 }
 
@@ -501,6 +533,7 @@ std::vector<Point<D>> by_name(const GenOptions& o, const std::string& name) {
                                   "binade-doubles, half-integers, extreme-doubles)");
     return perturb_ulps<D>(by_name<D>(o, base), o.ulps, o.seed);
   }
+  if (name == "pdb-like") return pdb_like<D>(o.n, o.seed, o.spacing);
   if (name == "near-duplicates") return near_duplicates<D>(o.n, o.seed, o.copies, o.ulps);
   if (name == "huge") return huge<D>(o.n, o.seed, o.exp_set ? o.exp : 1000);
   if (name == "tiny") return tiny<D>(o.n, o.seed, o.exp_set ? o.exp : -1074);
@@ -552,6 +585,7 @@ PointSet generate(const GenOptions& o) {
   template std::vector<Point<D>> near_duplicates<D>(std::size_t, std::uint64_t, std::size_t, std::int64_t); \
   template std::vector<Point<D>> huge<D>(std::size_t, std::uint64_t, int);                      \
   template std::vector<Point<D>> tiny<D>(std::size_t, std::uint64_t, int);                      \
+  template std::vector<Point<D>> pdb_like<D>(std::size_t, std::uint64_t, double);               \
   template void scale_to_unit<D>(std::vector<Point<D>>&);
 DLAB_GEN_INSTANTIATE(2)
 DLAB_GEN_INSTANTIATE(3)

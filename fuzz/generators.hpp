@@ -77,6 +77,16 @@ template <int D> std::vector<Point<D>> near_duplicates(std::size_t n, std::uint6
 template <int D> std::vector<Point<D>> huge(std::size_t n, std::uint64_t seed, int exp = 1000);
 // Random integers in [-2^20, 2^20] times 2^exp (default 2^-1074: all subnormal).
 template <int D> std::vector<Point<D>> tiny(std::size_t n, std::uint64_t seed, int exp = -1074);
+// Well-spaced points written as a PDB file writes atom coordinates (Liu &
+// Snoeyink, "A comparison of five implementations of 3D Delaunay
+// tessellation", MSRI Publications 52, 2005: atoms are evenly spread with a
+// minimum separation, and PDB's 8.3f field keeps three decimals): one point
+// per chosen cell of a grid of `spacing`, jittered by at most spacing/4 per
+// axis (so any two points are at least spacing/2 apart), the whole set moved
+// by a seeded offset in [-50, 50)^D, then each coordinate printed with "%8.3f"
+// and read back. The doubles are the nearest to multiples of 0.001: decimal
+// degeneracies become near-degeneracies of a few ulps.
+template <int D> std::vector<Point<D>> pdb_like(std::size_t n, std::uint64_t seed, double spacing = 1.9);
 // Kettner's grid: p(x,y) for x, y in [0, side), x fastest, then q = (12,12), r = (24,24).
 std::vector<Point2> kettner_grid(std::size_t side = 256);
 // The published incremental-hull failure sets: "A1", "A2", "B1", "B2".
@@ -103,6 +113,7 @@ struct GenOptions {
   bool exp_set = false;
   std::string set = "A1";    // kettner-hull
   double lo = 0, hi = 1;     // uniform box
+  double spacing = 1.9;      // pdb-like: grid spacing (angstroms)
   // binade-lattice, binade-doubles, half-integers (fuzz/binade_edges.hpp): the
   // edge exponent is `exp` when exp_set (else seeded); the lattice step 2^step_exp
   // when step_exp_set (else seeded among the three finest); the axes' signs.

@@ -60,6 +60,42 @@ TEST_CASE("splitmix64 matches the reference stream", "[gen]") {
   }
 }
 
+TEST_CASE("pdb-like: three decimals, well spaced", "[gen]") {
+  // Liu & Snoeyink 2005's setting: PDB's 8.3f coordinates of evenly spread atoms.
+  for (int dim : {2, 3}) {
+    GenOptions o;
+    o.name = "pdb-like";
+    o.n = 500;
+    o.dim = dim;
+    o.seed = 3;
+    const PointSet ps = generate(o);
+    REQUIRE(ps.size() == 500);
+    std::vector<std::array<double, 3>> pts;
+    for (const auto& p : ps.p2) pts.push_back({p[0], p[1], 0});
+    for (const auto& p : ps.p3) pts.push_back({p[0], p[1], p[2]});
+    char buf[64];
+    for (const auto& p : pts)
+      for (double c : p) {
+        // The nearest double to a multiple of 0.001 that prints in 8 columns.
+        std::snprintf(buf, sizeof buf, "%8.3f", c);
+        CHECK(std::strlen(buf) == 8);
+        CHECK(std::strtod(buf, nullptr) == c);
+        CHECK(std::fabs(c * 1000 - std::nearbyint(c * 1000)) < 1e-6);
+      }
+    // Jitter of at most a quarter spacing per axis: at least half a spacing
+    // apart, less the rounding of each coordinate (0.0005 per axis).
+    double closest = 1e300;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j) {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) d2 += (pts[i][k] - pts[j][k]) * (pts[i][k] - pts[j][k]);
+        closest = std::min(closest, std::sqrt(d2));
+      }
+    CHECK(closest >= 1.9 / 2 - 0.001 * std::sqrt(3.0));
+    CHECK(closest < 1.9);  // neighbours in adjacent cells come closer than a spacing somewhere
+  }
+}
+
 TEST_CASE("every generator is reproducible and the seed matters", "[gen]") {
   for (const auto& name : generator_names()) {
     for (int dim : {2, 3}) {
