@@ -23,6 +23,7 @@ const char* const kUsage =
     "                                   flip a triangulation of INPUT toward Delaunay\n"
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
+    "  dlab plot STUDY_DIR [--out DIR]  SVG + PNG figures of a study's runs.csv (dlab plot --help)\n"
     "  dlab fuzz --out DIR (--cases C | --budget T) [--algo LIST] [--kernel LIST] [--gen LIST]\n"
     "            [--dim 2|3] [--n N|LO..HI] [--seed S] [--jobs J] [--shard k/n]\n"
     "                                   classified robustness campaign (dlab fuzz --help)\n"
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
     if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
+    if (cmd == "plot") return dlab::cli::cmd_plot(argc, argv);
     if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
     if (cmd == "corpus") return dlab::cli::cmd_corpus(argc, argv);
     if (cmd == "shrink") return dlab::cli::cmd_shrink(argc, argv);

@@ -1,0 +1,106 @@
+// `dlab plot STUDY_DIR [--out DIR]` (issue 13): runs studies/plot/dlab_plot.py,
+// which reads STUDY_DIR/runs.csv and draws the figures with matplotlib. This file
+// only finds the interpreter and the script and passes the exit status through.
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+
+#ifndef DLAB_SOURCE_DIR
+#error "DLAB_SOURCE_DIR (the source tree, for studies/plot/dlab_plot.py) must be defined"
+#endif
+
+namespace dlab::cli {
+namespace {
+
+const char* const kPlotHelp =
+    "usage: dlab plot STUDY_DIR [--out DIR]\n"
+    "Draws the figures of a study (dlab study's STUDY_DIR/runs.csv, studies/README.md), each as\n"
+    "SVG and PNG in DIR (default STUDY_DIR/plots), with matplotlib:\n"
+    "  time_per_point    triangulation time per input point against n, log-log\n"
+    "  predicate_calls   predicate calls per point against n\n"
+    "  stage_shares      share of each predicate's calls answered by each stage, per generator\n"
+    "  flips_per_point   flips of each type per point against n\n"
+    "  cavity_sizes      mean and largest cavity (simplices) against n\n"
+    "  outcomes          heatmap: algorithm x kernel (and baselines) x generator, runs not ok\n"
+    "One panel per generator x dimension, one line per algorithm x kernel and per baseline\n"
+    "tool; per-point figures use the ok runs (median over seeds and repeats). A figure whose\n"
+    "columns are absent or empty is skipped with a notice. DIR/figures.json holds every\n"
+    "plotted value. Reruns give identical files.\n"
+    "Needs python3 with matplotlib and numpy (Debian: python3-matplotlib); /usr/bin/python3 is\n"
+    "used when it exists. Environment: DLAB_PLOT_SCRIPT overrides the script's path (default\n"
+    "<source dir>/studies/plot/dlab_plot.py).\n";
+
+bool is_file(const std::string& path, bool executable) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+         (!executable || ::access(path.c_str(), X_OK) == 0);
+}
+
+}  // namespace
+
+int cmd_plot(int argc, char** argv) {
+  std::string study, out;
+  try {
+    const Args a = parse_args(argc, argv, 2, {"--out"}, {"--help"});
+    if (a.has("--help")) {
+      std::cout << kPlotHelp;
+      return 0;
+    }
+    if (a.positional.size() != 1)
+      throw UsageError(a.positional.empty() ? "missing STUDY_DIR (dlab plot --help)"
+                                            : "unexpected argument '" + a.positional[1] + "'");
+    study = a.positional[0];
+    out = a.get("--out").value_or("");
+  } catch (const UsageError& e) {
+    std::cerr << "dlab plot: " << e.what() << "\n";
+    return 2;
+  }
+  const char* env = std::getenv("DLAB_PLOT_SCRIPT");
+  const std::string script =
+      env && *env ? env : std::string(DLAB_SOURCE_DIR) + "/studies/plot/dlab_plot.py";
+  if (!is_file(script, false)) {
+    std::cerr << "dlab plot: " << script << ": no such file (set DLAB_PLOT_SCRIPT to "
+              << "studies/plot/dlab_plot.py of the source tree)\n";
+    return 2;
+  }
+  const std::string python = is_file("/usr/bin/python3", true) ? "/usr/bin/python3" : "python3";
+  std::vector<std::string> args = {python, script, "--", study};
+  if (!out.empty()) args.insert(args.end() - 2, {"--out", out});
+  std::vector<char*> cargs;
+  for (auto& s : args) cargs.push_back(s.data());
+  cargs.push_back(nullptr);
+
+  std::cout << std::flush;
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    std::cerr << "dlab plot: fork: " << std::strerror(errno) << "\n";
+    return 2;
+  }
+  if (pid == 0) {
+    ::execvp(cargs[0], cargs.data());
+    std::cerr << "dlab plot: cannot run " << python << ": " << std::strerror(errno)
+              << " (dlab plot needs python3 with matplotlib: apt-get install python3-matplotlib)\n";
+    ::_exit(2);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) {
+      std::cerr << "dlab plot: waitpid: " << std::strerror(errno) << "\n";
+      return 2;
+    }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  std::cerr << "dlab plot: " << python << " died of signal " << WTERMSIG(status) << "\n";
+  return 1;
+}
+
+}  // namespace dlab::cli
