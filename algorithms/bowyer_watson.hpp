@@ -6,7 +6,9 @@
 //
 // For each point p, in the order given:
 //   1. locate: visibility walk from a simplex created for the previous point
-//      (algorithms/locate.hpp); a point equal to a vertex of the simplex found
+//      (algorithms/locate.hpp), or, with LocationScheme::scan, a test of every
+//      live simplex in storage order (no location structure: O(N^2) in all,
+//      Baker ch. 16.2.2; counter scan_tests); a point equal to a vertex of the simplex found
 //      is a duplicate and is merged into that vertex;
 //   2. cavity: the simplices in conflict with p, grown by adjacency from the
 //      simplex found, marked with a per-insertion stamp; the boundary facets
@@ -59,6 +61,9 @@ class BowyerWatson {
 
   const Mesh<D>& mesh() const { return mesh_; }
   const K& kernel() const { return k_; }
+  // Point location: the walk from the last insertion (default) or a scan of
+  // every live simplex (algorithms/locate.hpp); variants/driver.hpp sets it.
+  void set_location(LocationScheme s) { location_ = s; }
 
  private:
   bool insert(std::uint32_t i);  // false: failure (message_ set)
@@ -76,9 +81,10 @@ class BowyerWatson {
   std::uint32_t last_ = 0;   // where the next walk starts
   std::uint32_t stamp_ = 0;  // cavity stamp: stamp_ = in, stamp_ + 1 = out
   WalkRng rng_;
+  LocationScheme location_ = LocationScheme::walk;
   std::string message_;
   // counters
-  std::uint64_t walk_steps_ = 0, cavity_total_ = 0, cavity_max_ = 0, created_ = 0,
+  std::uint64_t walk_steps_ = 0, scan_tests_ = 0, cavity_total_ = 0, cavity_max_ = 0, created_ = 0,
                 duplicates_ = 0, boundary_max_ = 0;
 };
 
@@ -113,8 +119,14 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
   // An exact walk on a Delaunay triangulation never revisits a simplex, so
   // the number of slots bounds it; the slack covers nothing but bugs.
   const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
-  const Located loc = visibility_walk<K, D>(k_, mesh_, pts_, last_, p, bound, rng_);
+  const Located loc = locate<K, D>(location_, k_, mesh_, pts_, last_, p, bound, rng_);
   walk_steps_ += loc.steps;
+  scan_tests_ += loc.tests;
+  if (loc.end == Located::End::not_found) {
+    fail("the scan found no simplex containing " + std::string("insertion #") + std::to_string(i) +
+         (K::exact ? " (a bug: the kernel is exact)" : " (inconsistent orientations)"));
+    return false;
+  }
   if (loc.end == Located::End::step_bound) {
     fail("point location exceeded its bound of " + std::to_string(bound) + " steps at insertion #" +
          std::to_string(i) + (K::exact ? " (a bug: the kernel is exact)" : " (inconsistent orientations)"));
@@ -240,6 +252,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   res.merged_into = merged_;
   res.counters = {
       {"walk_steps", walk_steps_},
+      {"scan_tests", scan_tests_},
       {"cavity_simplices", cavity_total_},
       {"max_cavity_simplices", cavity_max_},
       {"max_cavity_boundary", boundary_max_},

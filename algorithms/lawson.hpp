@@ -7,7 +7,8 @@
 // (1996), which covers the perturbed, i.e. regular, setting used here).
 //
 // For each point p, in the order given:
-//   1. locate by the visibility walk (algorithms/locate.hpp), then split the
+//   1. locate by the visibility walk (algorithms/locate.hpp; or by a scan of
+//      every live simplex, LocationScheme::scan), then split the
 //      simplex found by the number of facets p lies on (orientation is never
 //      perturbed, so these cases remain under `sos`):
 //        2D: 1->3 (inside, or in a ghost triangle: outside the hull),
@@ -81,6 +82,9 @@ class Lawson {
 
   const Mesh<D>& mesh() const { return mesh_; }
   const K& kernel() const { return k_; }
+  // Point location: the walk from the last insertion (default) or a scan of
+  // every live simplex (algorithms/locate.hpp); variants/driver.hpp sets it.
+  void set_location(LocationScheme s) { location_ = s; }
 
  private:
   bool insert(std::uint32_t i);
@@ -106,8 +110,9 @@ class Lawson {
   std::uint32_t last_ = 0;
   std::uint64_t flip_budget_ = 0;
   WalkRng rng_;
+  LocationScheme location_ = LocationScheme::walk;
   std::string message_;
-  std::uint64_t walk_steps_ = 0, duplicates_ = 0, ins_1_ = 0, ins_2_ = 0, ins_n_ = 0, retries_ = 0;
+  std::uint64_t walk_steps_ = 0, scan_tests_ = 0, duplicates_ = 0, ins_1_ = 0, ins_2_ = 0, ins_n_ = 0, retries_ = 0;
 };
 
 // Replaces `old` by the star of p: in every old simplex, p substituted for
@@ -175,8 +180,14 @@ template <class K, int D>
 bool Lawson<K, D>::insert(std::uint32_t i) {
   const Point<D>& p = pts_[i];
   const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
-  const Located loc = visibility_walk<K, D>(k_, mesh_, pts_, last_, p, bound, rng_);
+  const Located loc = locate<K, D>(location_, k_, mesh_, pts_, last_, p, bound, rng_);
   walk_steps_ += loc.steps;
+  scan_tests_ += loc.tests;
+  if (loc.end == Located::End::not_found) {
+    fail("the scan found no simplex containing " + std::string("point ") + std::to_string(i) +
+         (K::exact ? " (a bug: the kernel is exact)" : " (inconsistent orientations)"));
+    return false;
+  }
   if (loc.end == Located::End::step_bound) {
     fail("point location exceeded its bound of " + std::to_string(bound) + " steps at point " +
          std::to_string(i) + (K::exact ? " (a bug: the kernel is exact)" : " (inconsistent orientations)"));
@@ -402,7 +413,7 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   res.merged_into = merged_;
   const FlipCounts& c = flipper_.counts;
   if constexpr (D == 2) {
-    res.counters = {{"walk_steps", walk_steps_}, {"insert_1_3", ins_1_},   {"insert_2_4", ins_2_},
+    res.counters = {{"walk_steps", walk_steps_}, {"scan_tests", scan_tests_}, {"insert_1_3", ins_1_},   {"insert_2_4", ins_2_},
                     {"flips_2_2", c.f22},        {"duplicates", duplicates_}};
   } else {
     // insert_1_4 / 2_6 / n_2n: splits (a point on a hull facet or edge is
@@ -412,6 +423,7 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
     // tetrahedra below, each counted in flips_2_3 / flips_4_4 as the 2-3
     // flips and the 4-4 flip it is made of.
     res.counters = {{"walk_steps", walk_steps_},
+                    {"scan_tests", scan_tests_},
                     {"insert_1_4", ins_1_},
                     {"insert_2_6", ins_2_},
                     {"insert_n_2n", ins_n_},

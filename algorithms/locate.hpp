@@ -14,6 +14,16 @@
 // the stochastic variant terminates on any triangulation with probability 1),
 // so hitting the bound is a bug there; with an inexact kernel it means the
 // signs were inconsistent and the caller reports a failure.
+//
+// scan_locate is the alternative without any location structure: test every
+// live simplex in storage order until one contains p (or, a ghost, sees p
+// strictly beyond its finite facet).  This is what a Bowyer-Watson without a
+// locator does (Baker, Handbook of Grid Generation ch. 16.2.2: O(N^2) in all,
+// against O(N log N) with a walk from the last insertion); it exists to be
+// measured (papers/baker-ch16, papers/su-drysdale1995).  With an exact kernel
+// some simplex always qualifies (the closed finite simplices tile the hull,
+// the ghosts see everything outside it); with an inexact one none may, and
+// the scan then ends after one pass with End::not_found.
 #pragma once
 #include <cstdint>
 
@@ -23,9 +33,10 @@
 namespace dlab {
 
 struct Located {
-  enum class End : unsigned char { inside, outside, step_bound } end = End::inside;
+  enum class End : unsigned char { inside, outside, step_bound, not_found } end = End::inside;
   std::uint32_t simplex = 0;  // finite simplex containing p (inside), conflicting ghost (outside)
-  std::uint32_t steps = 0;    // simplices crossed
+  std::uint32_t steps = 0;    // simplices crossed (walk)
+  std::uint64_t tests = 0;    // simplices tested (scan)
   int zeros = 0;              // facets with a zero orientation in the final simplex (inside)
 };
 
@@ -102,6 +113,55 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
     r.zeros = zeros;
     return r;
   }
+}
+
+// Whether p lies in the closed finite simplex s (no facet sees p strictly on
+// its outer side), counting the facets p lies on.
+template <class K, int D>
+bool contains_closed(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t s, const Point<D>& p,
+                     int& zeros) {
+  zeros = 0;
+  for (int f = 0; f <= D; ++f) {
+    const Sign o = orient_with<K, D>(k, m, pts, s, f, p);
+    if (o == Sign::negative) return false;
+    if (o == Sign::zero) ++zeros;
+  }
+  return true;
+}
+
+template <class K, int D>
+Located scan_locate(const K& k, const Mesh<D>& m, const Point<D>* pts, const Point<D>& p) {
+  Located r;
+  for (std::uint32_t s = 0; s < m.slots(); ++s) {
+    if (!m.alive(s)) continue;
+    ++r.tests;
+    if (m.is_ghost(s)) {
+      if (orient_with<K, D>(k, m, pts, s, D, p) == Sign::positive) {
+        r.end = Located::End::outside;
+        r.simplex = s;
+        return r;
+      }
+    } else if (contains_closed<K, D>(k, m, pts, s, p, r.zeros)) {
+      r.end = Located::End::inside;
+      r.simplex = s;
+      return r;
+    }
+  }
+  r.end = Located::End::not_found;
+  r.zeros = 0;
+  return r;
+}
+
+// The location scheme an incremental algorithm uses (RunOptions::location).
+enum class LocationScheme : unsigned char { walk, scan };
+
+// One point location by the chosen scheme.  The walk starts at `start` and is
+// bounded by max_steps; the scan ignores both.
+template <class K, int D>
+Located locate(LocationScheme scheme, const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t start,
+               const Point<D>& p, std::uint64_t max_steps, WalkRng& rng) {
+  if (scheme == LocationScheme::scan) return scan_locate<K, D>(k, m, pts, p);
+  return visibility_walk<K, D>(k, m, pts, start, p, max_steps, rng);
 }
 
 }  // namespace dlab

@@ -90,6 +90,7 @@ int cmd_flip(int argc, char** argv) {
   RunOptions opt;
   opt.algorithm = "flip";
   opt.order = "input";
+  opt.location = "none";  // flips from a given triangulation locate nothing
   Args a;
   PointSet points;
   std::vector<std::uint32_t> in;

@@ -1,6 +1,6 @@
 // `dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]
-//   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]
-//   [--stats FILE.json]
+//   [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]
+//   [--points-out FILE [--decimal]] [--stats FILE.json]
 //   [--exact-sphere] [--enclosing-box] [--validate]` (the first two of the last
 // three: --algo george only) (design.md section 5). Calls dlab::run() and
 // classifies the result (variants/outcome.hpp): the exact validator judges
@@ -53,11 +53,15 @@ class Output {
 
 const char* const kTriangulateUsage =
     "usage: dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
-    "         [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]\n"
-    "         [--stats FILE.json] [--validate] [--exact-sphere] [--enclosing-box]\n"
+    "         [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]\n"
+    "         [--points-out FILE [--decimal]] [--stats FILE.json] [--validate]\n"
+    "         [--exact-sphere] [--enclosing-box]\n"
     "A: bowyer-watson (default), lawson, tanemura, george (--exact-sphere: exact circumsphere test\n"
     "instead of George's floating one; --enclosing-box: the paper's box instead of a ghost vertex).\n"
     "K: adaptive (default), integer, mp (exact); float, epsilon (inexact baselines).\n"
+    "--location: point location of bowyer-watson and lawson: walk (default; the visibility walk\n"
+    "from the last insertion) or scan (every live simplex tested in storage order: O(n^2);\n"
+    "counter scan_tests).\n"
     "--validate: the exact validator judges the result of an exact pair too (it may take longer\n"
     "than the triangulation; not counted in seconds or peak_rss_bytes).\n";
 
@@ -73,8 +77,8 @@ int cmd_triangulate(int argc, char** argv) {
     }
   try {
     a = parse_args(argc, argv, 2,
-                   {"-o", "--algo", "--kernel", "--policy", "--order", "--seed", "--points-out",
-                    "--stats"},
+                   {"-o", "--algo", "--kernel", "--policy", "--order", "--location", "--seed",
+                    "--points-out", "--stats"},
                    {"--exact-sphere", "--enclosing-box", "--validate", "--decimal"});
     if (a.positional.size() != 1)
       throw UsageError(a.positional.empty() ? "missing INPUT"
@@ -84,6 +88,7 @@ int cmd_triangulate(int argc, char** argv) {
     // sos is the default for exact kernels; the inexact baselines run plain.
     opt.policy = a.get("--policy").value_or(kernel_is_exact(opt.kernel) ? "sos" : "strict");
     opt.order = a.get("--order").value_or(opt.order);
+    opt.location = a.get("--location").value_or(opt.location);
     opt.seed = a.u64("--seed", opt.seed);
     opt.exact_sphere = a.has("--exact-sphere");    // george only
     opt.enclosing_box = a.has("--enclosing-box");  // george only
@@ -91,6 +96,8 @@ int cmd_triangulate(int argc, char** argv) {
       throw UsageError("--policy must be sos or strict, not '" + opt.policy + "'");
     if (opt.order != "input" && opt.order != "random" && opt.order != "brio" && opt.order != "hilbert")
       throw UsageError("--order must be input, random, brio or hilbert, not '" + opt.order + "'");
+    if (opt.location != "walk" && opt.location != "scan")
+      throw UsageError("--location must be walk or scan, not '" + opt.location + "'");
     points = io::read_points(a.positional[0]);
     simplex_out = std::make_unique<Output>(a.get("-o"));
     if (auto p = a.get("--points-out")) points_out = std::make_unique<Output>(p);

@@ -14,7 +14,7 @@ const char* const kUsage =
     "usage:\n"
     "  dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
     "                   [--order input|random|brio|hilbert] [--seed N] [--points-out FILE [--decimal]]\n"
-    "                   [--stats FILE.json] [--validate]\n"
+    "                   [--location walk|scan] [--stats FILE.json] [--validate]\n"
     "  dlab check INPUT SIMPLICES [--orientation positive|any]\n"
     "                                   exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
     "  dlab predicate NAME K COORD...   NAME: orient2d incircle orient3d insphere; prints -1, 0 or 1\n"

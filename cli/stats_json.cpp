@@ -60,6 +60,7 @@ void write_stats_json(std::ostream& out, const StatsRecord& r) {
   out << "  \"kernel\": " << json_string(r.options.kernel) << ",\n";
   out << "  \"policy\": " << json_string(r.options.policy) << ",\n";
   out << "  \"order\": " << json_string(r.options.order) << ",\n";
+  out << "  \"location\": " << json_string(r.options.location) << ",\n";
   out << "  \"seed\": " << r.options.seed << ",\n";
   out << "  \"dimension\": " << res.dimension << ",\n";
   out << "  \"input_points\": " << r.input_points << ",\n";

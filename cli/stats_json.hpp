@@ -1,5 +1,6 @@
 // The --stats JSON object of `dlab triangulate` and `dlab flip` (design.md
-// section 5). Keys in this fixed order: algorithm, kernel, policy, order, seed,
+// section 5). Keys in this fixed order: algorithm, kernel, policy, order,
+// location (walk or scan; none for dlab flip), seed,
 // dimension, input_points, distinct_points, inserted_points (input points
 // processed before the run stopped: variants/run.hpp), simplices, seconds,
 // peak_rss_bytes (before validation), predicates, counters, snapping, outcome

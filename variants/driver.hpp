@@ -32,6 +32,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "algorithms/locate.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/counted.hpp"
 #include "predicates/kernel.hpp"
@@ -41,6 +42,17 @@
 
 
 namespace dlab {
+
+// An algorithm whose point location can be chosen (algorithms/locate.hpp).
+template <class A>
+concept HasLocationScheme = requires(A& a) { a.set_location(LocationScheme::walk); };
+
+// RunOptions::location by name.
+inline LocationScheme location_scheme(std::string_view name) {
+  if (name == "walk") return LocationScheme::walk;
+  if (name == "scan") return LocationScheme::scan;
+  throw UsageError("unknown location scheme '" + std::string(name) + "' (expected walk or scan)");
+}
 
 namespace driver_detail {
 
@@ -59,6 +71,7 @@ void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& 
   for (std::size_t i = 0; i < pts.size(); ++i) seq[i] = pts[order[i]];
 
   Algo<K, D> algo(k);
+  if constexpr (HasLocationScheme<Algo<K, D>>) algo.set_location(location_scheme(o.location));
   TriangulationResult t = algo.run(std::span<const Point<D>>(seq));
 
   r.outcome = t.outcome;
@@ -148,6 +161,8 @@ RunResult run_algorithm(const PointSet& ps, const RunOptions& o) {
   else
     throw UsageError("unknown policy '" + o.policy + "' (expected sos or strict)");
   parse_insertion_order(o.order);  // throws on an unknown name
+  if (location_scheme(o.location) != LocationScheme::walk && !HasLocationScheme<Algo<counted<K>, 2>>)
+    throw UsageError("--location " + o.location + " is available with bowyer-watson and lawson only");
   if (ps.dimension == 2) return driver_detail::run_dimension<Algo, K, 2>(ps.p2, o, sos);
   if (ps.dimension == 3) return driver_detail::run_dimension<Algo, K, 3>(ps.p3, o, sos);
   throw UsageError("dimension must be 2 or 3, not " + std::to_string(ps.dimension));

@@ -54,6 +54,10 @@ struct RunOptions {
   std::string kernel = "adaptive";          // adaptive | integer | mp | float | epsilon
   std::string policy = "sos";               // sos | strict
   std::string order = "brio";               // input | random | brio | hilbert
+  // Point location of the incremental algorithms: walk (the visibility walk
+  // from the last insertion) | scan (no location structure: every live simplex
+  // tested in storage order; bowyer-watson and lawson only).
+  std::string location = "walk";
   std::uint64_t seed = 0;
   bool exact_sphere = false;   // george: exact circumsphere test (default: stored floating spheres)
   bool enclosing_box = false;  // george: the paper's enclosing box instead of the ghost vertex
