@@ -15,6 +15,7 @@ int cmd_plot(int argc, char** argv);
 int cmd_fuzz(int argc, char** argv);
 int cmd_corpus(int argc, char** argv);
 int cmd_shrink(int argc, char** argv);
+int cmd_study(int argc, char** argv);
 int cmd_version(int argc, char** argv);
 
 }  // namespace dlab::cli

@@ -32,6 +32,9 @@ const char* const kUsage =
     "                                   one with the same failure (dlab shrink --help)\n"
     "  dlab corpus replay DIR|FILE... [--jobs J]  replay the regression corpus (dlab corpus --help)\n"
     "  dlab corpus add INPUT --to DIR [--name NAME] [--replace]  a point file -> a corpus case\n"
+    "  dlab study CONFIG.json --out DIR [--shard k/n] [--jobs J]  an algorithm comparison study:\n"
+    "                                   DIR/runs.csv + meta.json (--default: the built-in matrix)\n"
+    "  dlab study merge DIR... --out DIR shards -> exactly the unsharded study\n"
     "  dlab --version                   version, git commit (at configure time) and compiler\n"
     "A: bowyer-watson (default), lawson, tanemura, george. K: adaptive (default), integer, mp,\n"
     "float, epsilon. INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), or a\n"
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
     if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
     if (cmd == "corpus") return dlab::cli::cmd_corpus(argc, argv);
     if (cmd == "shrink") return dlab::cli::cmd_shrink(argc, argv);
+    if (cmd == "study") return dlab::cli::cmd_study(argc, argv);
     if (cmd == "--version" || cmd == "version") return dlab::cli::cmd_version(argc, argv);
     if (cmd == "help" || cmd == "--help" || cmd == "-h") {
       std::cout << kUsage << dlab::cli::kOutcomeHelp;

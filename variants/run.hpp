@@ -92,6 +92,7 @@ struct RunResult {
   // fewer after a failure, 0 for lower-dimensional input (no simplex is built).
   std::size_t inserted_points = 0;
   double seconds = 0;        // triangulating only
+  double cpu_seconds = 0;    // CPU time over the same span (CLOCK_THREAD_CPUTIME_ID: variants/driver.hpp)
   Counters counters;         // algorithm counters: "walk_steps", "cavity_simplices", "flips_2_3", ...
   Counters predicates;       // "orient2d", "orient2d.A", ... calls per predicate and per stage answered
   Counters snapping;         // integer kernel: "points_moved", "points_merged", ...; empty otherwise
