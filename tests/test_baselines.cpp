@@ -6,7 +6,11 @@
 // tags below.
 #include <catch2/catch.hpp>
 
+#include <sys/types.h>
+
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -252,12 +256,24 @@ TEST_CASE("baselines: child processes are timed out, their crashes reported", "[
   dlab::baselines::TempDir dir;
   const auto p = dir.path();
   SECTION("a hanging tool is killed at the limit, its children with it") {
-    const std::string tool = fake_tool(p, "hang", "sleep 30 & sleep 30");
+    const auto pid_file = p / "background.pid";
+    const std::string tool = fake_tool(p, "hang", "sleep 30 & echo $! > " + pid_file.string() + "; sleep 30");
     const ScopedEnv env("DLAB_QDELAUNAY", tool);
     const double t0 = dlab::baselines::wall_seconds_now();
     const auto run = run_and_classify("qhull", collinear_2d(), 0.3);
     CHECK(run.outcome == "timeout");
     CHECK(dlab::baselines::wall_seconds_now() - t0 < 5);
+    // The background sleep went too (init reaps it soon after the kill).
+    pid_t background = 0;
+    REQUIRE(std::ifstream(pid_file) >> background);
+    bool gone = false;
+    for (int i = 0; i < 200 && !gone; ++i) {
+      std::ifstream stat("/proc/" + std::to_string(background) + "/stat");
+      std::string pid, comm, state;
+      gone = !(stat >> pid >> comm >> state) || state == "Z";
+      if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    CHECK(gone);
   }
   SECTION("a tool killed by a signal is a crash") {
     const ScopedEnv env("DLAB_QDELAUNAY", fake_tool(p, "segv", "kill -SEGV $$"));
