@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "algorithms/validate.hpp"
+#include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
 #include "fuzz/generators.hpp"
@@ -246,12 +247,56 @@ void matrix(std::ostream& out) {
   }
 }
 
+// The full map of one kernel, for papers/shewchuk-kettner (the picture is drawn
+// there; the signs are decided here, by predicates/).
+void print_sign_map(std::ostream& out, const SignMap& m) {
+  out << "# dlab demo --sign-map: " << m.label
+      << ": orient2d signs, p = (0.5 + x*2^-53, 0.5 + y*2^-53), q = (12, 12), r = (24, 24)\n"
+         "# line 1 + y (y = 0.." << kSide - 1 << "), column 1 + x (x = 0.." << kSide - 1
+      << "); '+' = 1, '-' = -1, '0' = 0\n"
+         "# wrong " << m.wrong << ", opposite " << m.flipped << ", false zero " << m.false_zero
+      << " of " << kSide * kSide << " (exact sign: sign(y - x))\n";
+  for (int y = 0; y < kSide; ++y) {
+    std::string row(kSide, '0');
+    for (int x = 0; x < kSide; ++x) {
+      const int s = m.s[static_cast<std::size_t>(y * kSide + x)];
+      row[static_cast<std::size_t>(x)] = s > 0 ? '+' : (s < 0 ? '-' : '0');
+    }
+    out << row << "\n";
+  }
+}
+
+const char* const kDemoHelp =
+    "usage: dlab demo                        the sign-map experiment and the kernel matrix\n"
+    "       dlab demo --sign-map K [--qrp]   the full 256 x 256 sign map of kernel K\n"
+    "--sign-map K: orient2d(p, q, r) by kernel K for Kettner et al.'s grid p = (0.5 + x*2^-53,\n"
+    "0.5 + y*2^-53), 0 <= x, y < 256, q = (12, 12), r = (24, 24): three '#' lines, then line\n"
+    "1 + y holds the signs for x = 0..255 ('+', '-', '0'). --qrp evaluates orient2d(q, r, p)\n"
+    "instead: the same exact sign, but the floating-point formula then takes its differences\n"
+    "from p, as Kettner et al.'s float_orient does.\n";
+
 }  // namespace
 
 int cmd_demo(int argc, char** argv) {
-  (void)argv;
-  if (argc > 2) {
-    std::cerr << "dlab demo: takes no arguments\n";
+  std::string map_kernel;
+  bool qrp = false;
+  try {
+    const Args a = parse_args(argc, argv, 2, {"--sign-map"}, {"--qrp", "--help"});
+    if (a.has("--help")) {
+      std::cout << kDemoHelp;
+      return 0;
+    }
+    if (!a.positional.empty()) throw UsageError("takes no arguments, only options (unexpected '" + a.positional[0] +
+                                 "'; dlab demo --help)");
+    map_kernel = a.get("--sign-map").value_or("");
+    qrp = a.has("--qrp");
+    if (qrp && map_kernel.empty()) throw UsageError("--qrp needs --sign-map K");
+    if (!map_kernel.empty()) {
+      print_sign_map(std::cout, sign_map(map_kernel, qrp));
+      return 0;
+    }
+  } catch (const UsageError& e) {
+    std::cerr << "dlab demo: " << e.what() << "\n";
     return 2;
   }
   sign_map_experiment(std::cout);
