@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -22,6 +23,46 @@ namespace dlab {
 namespace baselines {
 
 void write_coordinate(std::FILE* f, double x) { std::fprintf(f, "%.17g", x); }
+
+void write_point_file(const std::filesystem::path& file, const std::string& header, const PointSet& points,
+                      bool numbered) {
+  std::FILE* f = std::fopen(file.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + file.string());
+  std::fputs(header.c_str(), f);
+  const int d = points.dimension;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (numbered) std::fprintf(f, "%zu ", i);
+    for (int j = 0; j < d; ++j) {
+      if (j) std::fputc(' ', f);
+      write_coordinate(f, d == 2 ? points.p2[i][j] : points.p3[i][j]);
+    }
+    std::fputc('\n', f);
+  }
+  if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + file.string());
+}
+
+std::optional<double> number_after(const std::string& text, const std::string& key) {
+  const auto at = text.find(key);
+  if (at == std::string::npos) return std::nullopt;
+  std::istringstream s(text.substr(at + key.size(), 64));
+  double x = 0;
+  if (!(s >> x)) return std::nullopt;
+  return x;
+}
+
+bool read_index_lines(std::istream& in, int d, BaselineRun& run) {
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    long long v = 0;
+    int count = 0;
+    while (s >> v) {
+      if (v < 0 || v > 0xffffffffLL || ++count > d + 1) return false;
+      run.simplices.push_back(static_cast<std::uint32_t>(v));
+    }
+    if (count != d + 1 || !s.eof()) return false;
+  }
+  return true;
+}
 
 std::string first_line(std::string_view text) {
   std::size_t begin = 0;

@@ -34,49 +34,14 @@
 namespace dlab::baselines {
 namespace {
 
-// The number after "CPU seconds to compute hull (after input):", or nullopt.
-std::optional<double> hull_seconds(const std::string& summary) {
-  const std::string key = "CPU seconds to compute hull (after input):";
-  const auto at = summary.find(key);
-  if (at == std::string::npos) return std::nullopt;
-  std::istringstream s(summary.substr(at + key.size(), 64));
-  double x = 0;
-  if (!(s >> x)) return std::nullopt;
-  return x;
-}
-
 // Reads "M" then M lines of d+1 indices; false if malformed (e.g. a
 // non-simplicial region, which `Qt` rules out).
 bool read_regions(const std::filesystem::path& file, int d, BaselineRun& run) {
   std::ifstream in(file);
-  std::string line;
   std::size_t m = 0;
+  std::string line;
   if (!std::getline(in, line) || !(std::istringstream(line) >> m)) return false;
-  run.simplices.reserve((d + 1) * m);
-  for (std::size_t r = 0; r < m; ++r) {
-    if (!std::getline(in, line)) return false;
-    std::istringstream s(line);
-    long long v = 0;
-    int count = 0;
-    while (s >> v) {
-      if (v < 0 || v > 0xffffffffLL || ++count > d + 1) return false;
-      run.simplices.push_back(static_cast<std::uint32_t>(v));
-    }
-    if (count != d + 1 || !s.eof()) return false;
-  }
-  return true;
-}
-
-template <int D>
-void write_points(std::FILE* f, const std::vector<Point<D>>& pts) {
-  std::fprintf(f, "%d\n%zu\n", D, pts.size());
-  for (const auto& p : pts) {
-    for (int j = 0; j < D; ++j) {
-      if (j) std::fputc(' ', f);
-      write_coordinate(f, p[j]);
-    }
-    std::fputc('\n', f);
-  }
+  return read_index_lines(in, d, run) && run.simplices.size() == (d + 1) * m;
 }
 
 }  // namespace
@@ -92,15 +57,8 @@ BaselineRun run_qhull(const PointSet& points, const BaselineOptions& options) {
   }
   TempDir dir;
   const auto input = dir.path() / "points.txt";
-  {
-    std::FILE* f = std::fopen(input.c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + input.string());
-    if (points.dimension == 2)
-      write_points<2>(f, points.p2);
-    else
-      write_points<3>(f, points.p3);
-    if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + input.string());
-  }
+  write_point_file(input, std::to_string(points.dimension) + "\n" + std::to_string(points.size()) + "\n",
+                   points, false);
   const auto out = dir.path() / "stdout", err = dir.path() / "stderr";
   const ProcessResult p =
       run_process({*exe, "Qt", "i", "s"}, dir.path(), input, out, err, options.timeout_seconds);
@@ -116,7 +74,7 @@ BaselineRun run_qhull(const PointSet& points, const BaselineOptions& options) {
     if (run.message.empty()) run.message = "qdelaunay " + describe(p, options.timeout_seconds);
     return run;
   }
-  const auto seconds = hull_seconds(summary);
+  const auto seconds = number_after(summary, "CPU seconds to compute hull (after input):");
   if (!seconds || !read_regions(out, points.dimension, run)) {
     run.simplices.clear();
     run.outcome = "crash";

@@ -22,22 +22,6 @@ namespace {
 
 constexpr int kReportedExit = 3;  // scipy_delaunay.py after a QhullError
 
-bool read_simplices(const std::filesystem::path& file, int d, BaselineRun& run) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    long long v = 0;
-    int count = 0;
-    while (s >> v) {
-      if (v < 0 || v > 0xffffffffLL || ++count > d + 1) return false;
-      run.simplices.push_back(static_cast<std::uint32_t>(v));
-    }
-    if (count != d + 1 || !s.eof()) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 BaselineRun run_scipy(const PointSet& points, const BaselineOptions& options) {
@@ -50,21 +34,8 @@ BaselineRun run_scipy(const PointSet& points, const BaselineOptions& options) {
     return run;
   }
   TempDir dir;
-  const auto input = dir.path() / "points.txt";
-  {
-    std::FILE* f = std::fopen(input.c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + input.string());
-    const int d = points.dimension;
-    std::fprintf(f, "%d %zu\n", d, points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      for (int j = 0; j < d; ++j) {
-        if (j) std::fputc(' ', f);
-        write_coordinate(f, d == 2 ? points.p2[i][j] : points.p3[i][j]);
-      }
-      std::fputc('\n', f);
-    }
-    if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + input.string());
-  }
+  write_point_file(dir.path() / "points.txt",
+                   std::to_string(points.dimension) + " " + std::to_string(points.size()) + "\n", points, false);
   const auto out = dir.path() / "stdout", err = dir.path() / "stderr";
   const ProcessResult p = run_process({*python, DLAB_SCIPY_SCRIPT, "points.txt", "simplices.txt"},
                                       dir.path(), std::nullopt, out, err, options.timeout_seconds);
@@ -89,8 +60,9 @@ BaselineRun run_scipy(const PointSet& points, const BaselineOptions& options) {
   double wall = 0, cpu = 0;
   std::string word;
   std::istringstream s(text);
+  std::ifstream simplices(dir.path() / "simplices.txt");
   if (!(s >> word >> wall >> cpu) || word != "seconds" ||
-      !read_simplices(dir.path() / "simplices.txt", points.dimension, run)) {
+      !read_index_lines(simplices, points.dimension, run)) {
     run.simplices.clear();
     run.outcome = "crash";
     run.message = "scipy_delaunay.py wrote unreadable output";

@@ -34,17 +34,6 @@ namespace {
 
 constexpr std::string_view kUncaught = "terminate called after throwing an instance of 'int'";
 
-// The number after "Delaunay seconds:" in TetGen's output, or nullopt.
-std::optional<double> delaunay_seconds(const std::string& out) {
-  const std::string key = "Delaunay seconds:";
-  const auto at = out.find(key);
-  if (at == std::string::npos) return std::nullopt;
-  std::istringstream s(out.substr(at + key.size(), 64));
-  double x = 0;
-  if (!(s >> x)) return std::nullopt;
-  return x;
-}
-
 // TetGen's last words before an error exit: the last line holding
 // "Exception" or "Error", else the last non-blank line of stdout.
 std::string error_line(const std::string& out) {
@@ -97,21 +86,7 @@ BaselineRun run_tetgen(const PointSet& points, const BaselineOptions& options) {
     return run;
   }
   TempDir dir;
-  const auto node = dir.path() / "points.node";
-  {
-    std::FILE* f = std::fopen(node.c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + node.string());
-    std::fprintf(f, "%zu 3 0 0\n", points.p3.size());
-    for (std::size_t i = 0; i < points.p3.size(); ++i) {
-      std::fprintf(f, "%zu", i);
-      for (double x : points.p3[i]) {
-        std::fputc(' ', f);
-        write_coordinate(f, x);
-      }
-      std::fputc('\n', f);
-    }
-    if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + node.string());
-  }
+  write_point_file(dir.path() / "points.node", std::to_string(points.size()) + " 3 0 0\n", points, true);
   std::vector<std::string> argv;
   if (find_executable("stdbuf")) argv = {"stdbuf", "-oL"};
   argv.insert(argv.end(), {*exe, "-zNFIJ", "points.node"});
@@ -135,7 +110,7 @@ BaselineRun run_tetgen(const PointSet& points, const BaselineOptions& options) {
     if (const auto e = first_line(errors); !e.empty()) run.message += ": " + e;
     return run;
   }
-  const auto seconds = delaunay_seconds(text);
+  const auto seconds = number_after(text, "Delaunay seconds:");
   if (!seconds || !read_ele(dir.path() / "points.ele", run)) {
     run.simplices.clear();
     run.outcome = "crash";

@@ -4,6 +4,8 @@
 // occurrence. What each timer covers is said at each function's definition.
 #pragma once
 #include <cstdio>
+#include <filesystem>
+#include <istream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +34,20 @@ std::optional<std::string> tool_path(const std::string& name, std::string* why);
 // section 5.12.2). Infinite and NaN coordinates never get here (the point
 // readers refuse them).
 void write_coordinate(std::FILE* f, double x);
+
+// Writes `header` then one point per line ("I X Y [Z]" with its zero-based
+// index I when `numbered`, else "X Y [Z]"), coordinates by write_coordinate.
+// Throws std::runtime_error when the file cannot be written.
+void write_point_file(const std::filesystem::path& file, const std::string& header, const PointSet& points,
+                      bool numbered);
+
+// Reads lines of exactly d+1 non-negative indices (up to the end of `in`)
+// into `run.simplices`; false at the first malformed line.
+bool read_index_lines(std::istream& in, int d, BaselineRun& run);
+
+// The number after the first occurrence of `key` in `text` (a tool's timing
+// line), or nullopt.
+std::optional<double> number_after(const std::string& text, const std::string& key);
 
 // The first line of `text` that is not blank, cut at its first ".  " (Qhull
 // continues a message with advice after two spaces) and at 300 characters.
