@@ -82,7 +82,9 @@ def _line_figure(study, curves, stem, title, ylabel, logy, caption, panel_titles
             ns += [p[0] for p in pts]
             runs += sum(p[2] for p in pts)
         ax.set_xscale("log")
+        ax.set_xticks(sorted(set(ns)))  # the sizes the study ran
         ax.xaxis.set_major_formatter(_plain)
+        ax.xaxis.set_minor_formatter(ticker.NullFormatter())
         if logy:
             ax.set_yscale("log")
             ax.yaxis.set_major_locator(ticker.LogLocator(subs=(1.0, 2.0, 5.0)))

@@ -40,9 +40,11 @@ BASELINE_STYLE = {
 }
 VARIANT_MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*", "h", "<", ">"]
 # Stages of predicates/*: the order in which a call can reach them.
-# The floating-point stages of the adaptive kernel; the others compute exactly.
-FLOATING_STAGES = {"static", "filter", "A"}
-STAGE_ORDER = ["static", "filter", "A", "B", "C", "D", "integer", "exact", "mp", "perturbation"]
+# Stages that answer in floating point (the adaptive kernel's first ones, and the
+# single stage of the inexact kernels); the others compute exactly.
+FLOATING_STAGES = {"static", "filter", "A", "float", "epsilon"}
+STAGE_ORDER = ["float", "epsilon", "static", "filter", "A", "B", "C", "D", "integer", "exact", "mp",
+               "perturbation"]
 
 
 def algorithm_colour(algorithm, algorithms):
