@@ -64,6 +64,11 @@ def _json_curves(curves):
             for p, series in sorted(curves.items())}
 
 
+def _json_titled(curves, titles):
+    return {titles[k][1]: {rt.series_label(s): [list(t) for t in pts] for s, pts in sorted(v.items())}
+            for k, v in sorted(curves.items(), key=lambda kv: titles[kv[0]][0])}
+
+
 def _line_figure(study, curves, stem, title, ylabel, logy, caption, panel_titles=None, ncols=None):
     """One panel per key of curves: a Panel, or any key of panel_titles, whose values are
     (sort key, panel title[, y label])."""
@@ -243,9 +248,7 @@ def flips_per_point(study):
         "input point; median over seeds and repeats of the ok runs. Only algorithms that flip "
         "have these counters.", panel_titles=titles)
     return dict(files=files, unit="flips per input point",
-                panels={titles[k][1]: {rt.series_label(s): [list(t) for t in pts]
-                                       for s, pts in sorted(v.items())}
-                        for k, v in sorted(curves.items(), key=lambda kv: titles[kv[0]][0])})
+                panels=_json_titled(curves, titles))
 
 
 def cavity_sizes(study):
@@ -278,9 +281,7 @@ def cavity_sizes(study):
         "Only cavity-based algorithms have these counters.", panel_titles=titles,
         ncols=2 if len(present) == 2 else None)
     return dict(files=files, columns=present,
-                panels={titles[k][1]: {rt.series_label(s): [list(t) for t in pts]
-                                       for s, pts in sorted(v.items())}
-                        for k, v in sorted(curves.items(), key=lambda kv: titles[kv[0]][0])})
+                panels=_json_titled(curves, titles))
 
 
 def outcomes(study):
