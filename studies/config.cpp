@@ -134,7 +134,7 @@ std::string one_of(const std::string& what, const std::string& s, const std::vec
 void read_gen_options(const Reader& r, const Json& o, const std::string& pointer, gen::GenOptions& g) {
   r.only_keys(o, pointer,
               {"off", "ulps", "base", "clusters", "sigma", "copies", "side", "exp", "set", "lo", "hi", "step-exp",
-               "sign"});
+               "sign", "spacing"});
   for (const auto& [key, v] : o.items()) {
     const std::string p = pointer + "/" + token(key);
     if (key == "off") g.off = r.u64(v, p, 0, kMaxN);
@@ -156,6 +156,7 @@ void read_gen_options(const Reader& r, const Json& o, const std::string& pointer
     if (key == "lo") g.lo = r.real(v, p);
     if (key == "hi") g.hi = r.real(v, p);
     if (key == "sign") g.sign = r.string(v, p);
+    if (key == "spacing") g.spacing = r.real(v, p);
   }
 }
 
