@@ -54,7 +54,8 @@ const std::vector<std::string>& algorithm_counter_names() {
       "removed_for_visibility", "added_for_zero_volume", "zero_volume_not_addable", "removed_for_connectivity",
       "removed_for_enclosed_vertex", "valid", "non_delaunay_facets",
       // george+enclosing-box: what removing the box leaves missing
-      "hull_facets_missing", "hull_volume_missing_ppm", "missing_vertices", "reflex_boundary_ridges"};
+      "box_simplices_removed", "hull_facets_missing", "hull_volume_missing_ppm", "missing_vertices",
+      "reflex_boundary_ridges"};
   return names;
 }
 

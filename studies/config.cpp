@@ -210,10 +210,11 @@ Json parse_rejecting_duplicates(const std::string& text, const std::string& path
     return Json::parse(text, cb);
   } catch (const Json::parse_error& e) {
     // e.byte: 1-based index of the byte at which parsing stopped.
-    const std::string what = e.what();
-    const auto colon = what.find("parse error");
-    throw ConfigError(path + ":" + line_column(text, e.byte == 0 ? 0 : e.byte - 1) + ": JSON " +
-                      (colon == std::string::npos ? what : what.substr(colon)));
+    // what(): "[json.exception.parse_error.101] parse error at line L, column C: WHY"; keep WHY.
+    std::string why = e.what();
+    if (const auto at = why.find("parse error"); at != std::string::npos)
+      if (const auto colon = why.find(": ", at); colon != std::string::npos) why = why.substr(colon + 2);
+    throw ConfigError(path + ":" + line_column(text, e.byte == 0 ? 0 : e.byte - 1) + ": JSON syntax error: " + why);
   }
 }
 

@@ -8,25 +8,11 @@
 
 namespace dlab::study {
 
-namespace {
-
-// RunOptions::location where this build has it (bowyer-watson and lawson
-// choose their point location); without it only "walk" exists.
-template <class Options>
-void set_location(Options& o, const std::string& location) {
-  if constexpr (requires { o.location = location; })
-    o.location = location;
-  else if (location != "walk")
-    throw ConfigError("location '" + location + "' is not available in this build");
-}
-
-}  // namespace
-
 RunOptions RunSpec::options() const {
   RunOptions o = fuzz::make_pair(algorithm, kernel).options(seed);
   o.policy = policy;
   o.order = order;
-  if (location != "-") set_location(o, location);
+  if (location != "-") o.location = location;
   return o;
 }
 

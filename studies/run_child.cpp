@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -136,6 +137,10 @@ nlohmann::json run_external(const PointSet& pts, const RunSpec& s, double timeou
   try {
     const PointSet pts = load_input(c.inputs.at(s.input), s.n, s.seed, c.path);
     send(fd, {{"input_points", pts.size()}});
+    // Test hook (tests/test_study.sh): the run with this id dies of SIGSEGV,
+    // as an inexact kernel's run may, to check that it becomes outcome crash.
+    if (const char* crash = std::getenv("DLAB_STUDY_CRASH_RUN"); crash && std::to_string(s.id) == crash)
+      std::raise(SIGSEGV);
     send(fd, s.is_baseline() ? run_external(pts, s, c.timeout_seconds) : run_dlab(pts, s, c.timeout_seconds));
   } catch (const std::bad_alloc&) {
     _exit(fuzz::kOutOfMemoryExit);
