@@ -107,7 +107,9 @@ def series_label(series):
 
 
 def panel_of(row):
-    source = row["generator"] if row["generator"] not in ("", "-", "file") else row["input"]
+    # The input's label: the generator's name unless the config labels it (two
+    # inputs of one generator with different options are two panels).
+    source = row["input"] or row["generator"]
     return Panel(source, row["dimension"])
 
 
