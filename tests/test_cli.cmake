@@ -451,6 +451,12 @@ function(expect_json name path regex)
     message(STATUS "ok   ${name}")
   endif()
 endfunction()
+# --location: scan (bowyer-watson, lawson) gives the walk's triangulation and says so in --stats.
+dlab_case(location_unknown RC 2 ERR "--location must be walk or scan, not 'kd-tree'" ARGS triangulate square.txt --location kd-tree)
+dlab_case(location_scan_elsewhere RC 2 ERR "available with bowyer-watson and lawson only" ARGS triangulate square.txt --algo tanemura --location scan)
+dlab_case(location_scan RC 0 ARGS triangulate cube.txt --algo lawson --kernel integer --location scan --stats location_scan.json -o cube_scan.tet)
+dlab_case(location_scan_check RC 0 OUT "valid Delaunay" ARGS check cube.txt cube_scan.tet)
+expect_json(location_scan_stats "${WORK}/location_scan.json" "\"location\": \"scan\",.*\"walk_steps\": 0,\n *\"scan_tests\": [1-9]")
 set(pair_re "\\(([a-z-]+( --[a-z-]+)*), (adaptive|integer|mp|float|epsilon) kernel\\)")
 
 # The table is in every --help.
