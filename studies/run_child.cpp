@@ -100,8 +100,11 @@ nlohmann::json run_dlab(const PointSet& pts, const RunSpec& s, double timeout) {
 
 nlohmann::json run_external(const PointSet& pts, const RunSpec& s, double timeout) {
 #if DLAB_STUDY_BASELINES
+  // No RLIMIT_CPU here: CGAL's timer (baselines_cgal.cpp) reads
+  // CLOCK_PROCESS_CPUTIME_ID, which an armed process CPU limit makes
+  // tick-granular (variants/driver.hpp); external tools have the baselines'
+  // own wall-clock limit, CGAL the parent's (10 x timeout + 10 s).
   reset_peak_rss();
-  fuzz::limit_cpu_for_next(timeout);
   BaselineRun b = run_baseline(s.tool, pts, BaselineOptions{timeout});
   if (b.skipped) return {{"skipped", b.message}};
   std::uint64_t rss = 0;

@@ -165,7 +165,7 @@ int run_study(StudyOptions o, std::ostream& out, std::ostream& err) {
   std::uint64_t finished = 0, not_ok = 0;
   std::set<std::string> unknown_names;
   std::vector<RunChild> active;
-  Progress progress(mine.size(), done.size());
+  Progress progress(done.size() + todo.size(), done.size());
   const double wall_limit = 10 * o.config.timeout_seconds + 10;
   const auto t0 = Clock::now();
 
