@@ -6,10 +6,11 @@
 //
 // For each point p, in the order given:
 //   1. locate: visibility walk from a simplex created for the previous point
-//      (algorithms/locate.hpp), or, with LocationScheme::scan, a test of every
-//      live simplex in storage order (no location structure: O(N^2) in all,
-//      Baker ch. 16.2.2; counter scan_tests); a point equal to a vertex of the simplex found
-//      is a duplicate and is merged into that vertex;
+//      (algorithms/locate.hpp), or, with LocationScheme::scan, live simplices
+//      tested in storage order until one contains p (no location structure:
+//      O(N^2) in all, Baker ch. 16.2.2; counter scan_tests); a point equal
+//      to a vertex of the simplex found is a duplicate and is merged into that
+//      vertex;
 //   2. cavity: the simplices in conflict with p, grown by adjacency from the
 //      simplex found, marked with a per-insertion stamp; the boundary facets
 //      are recorded while searching.  A finite simplex conflicts iff p is

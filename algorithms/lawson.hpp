@@ -112,7 +112,8 @@ class Lawson {
   WalkRng rng_;
   LocationScheme location_ = LocationScheme::walk;
   std::string message_;
-  std::uint64_t walk_steps_ = 0, scan_tests_ = 0, duplicates_ = 0, ins_1_ = 0, ins_2_ = 0, ins_n_ = 0, retries_ = 0;
+  std::uint64_t walk_steps_ = 0, scan_tests_ = 0, duplicates_ = 0, ins_1_ = 0, ins_2_ = 0, ins_n_ = 0,
+                retries_ = 0;
 };
 
 // Replaces `old` by the star of p: in every old simplex, p substituted for
@@ -413,8 +414,8 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   res.merged_into = merged_;
   const FlipCounts& c = flipper_.counts;
   if constexpr (D == 2) {
-    res.counters = {{"walk_steps", walk_steps_}, {"scan_tests", scan_tests_}, {"insert_1_3", ins_1_},   {"insert_2_4", ins_2_},
-                    {"flips_2_2", c.f22},        {"duplicates", duplicates_}};
+    res.counters = {{"walk_steps", walk_steps_}, {"scan_tests", scan_tests_}, {"insert_1_3", ins_1_},
+                    {"insert_2_4", ins_2_},      {"flips_2_2", c.f22},         {"duplicates", duplicates_}};
   } else {
     // insert_1_4 / 2_6 / n_2n: splits (a point on a hull facet or edge is
     // also counted in insert_on_hull); insert_exterior: points outside the
