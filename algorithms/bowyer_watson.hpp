@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "algorithms/cavity.hpp"
+#include "algorithms/cavity_histogram.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/locate.hpp"
 #include "algorithms/mesh.hpp"
@@ -87,6 +88,7 @@ class BowyerWatson {
   // counters
   std::uint64_t walk_steps_ = 0, scan_tests_ = 0, cavity_total_ = 0, cavity_max_ = 0, created_ = 0,
                 duplicates_ = 0, boundary_max_ = 0;
+  CavityHistogram cavity_sizes_;
 };
 
 template <class K, int D>
@@ -182,6 +184,7 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
   }
   cavity_total_ += cavity_.size();
   cavity_max_ = std::max<std::uint64_t>(cavity_max_, cavity_.size());
+  cavity_sizes_.add(cavity_.size());
   boundary_max_ = std::max<std::uint64_t>(boundary_max_, records_.size());
   created_ += records_.size();
 
@@ -262,6 +265,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
       {"mesh_slots", mesh_.slots()},
       {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_.bytes_reserved()},
   };
+  cavity_sizes_.append_to(res.counters);
   return res;
 }
 

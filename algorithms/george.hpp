@@ -80,6 +80,7 @@
 #include <vector>
 
 #include "algorithms/cavity.hpp"
+#include "algorithms/cavity_histogram.hpp"
 #include "algorithms/circumsphere_store.hpp"
 #include "algorithms/george_box.hpp"
 #include "algorithms/initial_simplex.hpp"
@@ -148,6 +149,7 @@ class George {
                 duplicates_ = 0, float_tests_ = 0, removed_visibility_ = 0, added_zero_ = 0,
                 zero_not_addable_ = 0, removed_connectivity_ = 0, removed_enclosed_ = 0,
                 corrected_insertions_ = 0, rounds_ = 0, base_total_ = 0, box_removed_ = 0;
+  CavityHistogram cavity_sizes_;
 };
 
 template <class K, int D>
@@ -419,6 +421,7 @@ bool George<K, D>::insert(std::uint32_t i) {
   if (!correct(i, nbase)) return false;
   cavity_total_ += cavity_.size();
   cavity_max_ = std::max<std::uint64_t>(cavity_max_, cavity_.size());
+  cavity_sizes_.add(cavity_.size());
   created_ += records_.size();
 
   // (7) re-star.
@@ -507,6 +510,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
       {"mesh_slots", mesh_.slots()},
       {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_.bytes_reserved() + spheres_.bytes_reserved()},
   };
+  cavity_sizes_.append_to(res.counters);
   if (opt_.enclosing_box) res.counters.push_back({"box_simplices_removed", box_removed_});
   return res;
 }

@@ -40,7 +40,8 @@ const std::vector<std::string>& algorithm_counter_names() {
       // point location and the mesh (bowyer-watson, lawson, george)
       "walk_steps", "scan_tests", "duplicates", "mesh_slots", "mesh_bytes_reserved", "simplices_created",
       // cavities (bowyer-watson, george)
-      "cavity_simplices", "max_cavity_simplices", "max_cavity_boundary",
+      "cavity_simplices", "max_cavity_simplices", "max_cavity_boundary", "cavity_size_1", "cavity_size_2_3",
+      "cavity_size_4_7", "cavity_size_8_15", "cavity_size_16_31", "cavity_size_32_63", "cavity_size_64_up",
       // lawson: insertions by type, flips by type
       "insert_1_3", "insert_2_4", "insert_1_4", "insert_2_6", "insert_n_2n", "insert_exterior", "exterior_facets",
       "insert_on_hull", "flips_2_2", "flips_2_3", "flips_3_2", "flips_4_4", "hull_edge_removals", "flips_total",

@@ -17,7 +17,7 @@ import sys
 DLAB, WORK = sys.argv[1], pathlib.Path(sys.argv[2])
 FIXTURE = pathlib.Path(__file__).resolve().parent / "data" / "study_fixture"
 STEMS = ["time_per_point", "predicate_calls", "stage_shares", "flips_per_point", "cavity_sizes",
-         "outcomes"]
+         "cavity_histogram", "outcomes"]
 failures = []
 
 
@@ -91,6 +91,14 @@ v = figs["cavity_sizes"]["panels"]
 check(close(v["uniform 2D · mean cavity"]["bowyer-watson × adaptive"][1][1], 4.0)
       and v["uniform 2D · largest cavity"]["bowyer-watson × adaptive"][1][1] == 12,
       "cavity sizes: %s" % v.get("uniform 2D · largest cavity"))
+# Cavity histogram: uniform 2D at its largest n (1000), bowyer-watson x adaptive,
+# seeds 1 and 2: buckets 10+20, 300+290, 600+610, 87+77 of 1994 insertions.
+h = figs["cavity_histogram"]["panels"]["uniform 2D"]
+shares = h["series"]["bowyer-watson × adaptive"]["shares_percent"]
+check(h["n"] == 1000 and h["series"]["bowyer-watson × adaptive"]["insertions"] == 1994
+      and close(shares[0], 100 * 30 / 1994) and close(shares[2], 100 * 1210 / 1994)
+      and shares[4:] == [0, 0, 0],
+      "cavity histogram, uniform 2D: %s" % h)
 # Outcomes: bowyer-watson x float failed both near-degenerate runs, lawson x float one,
 # qhull one; nothing else failed.
 o = figs["outcomes"]
@@ -119,8 +127,8 @@ with open(bare / "runs.csv", "w", newline="") as out:
     csv.writer(out, lineterminator="\n").writerows([[row[i] for i in keep] for row in rows])
 r = plot(bare)
 skipped = json.loads((bare / "plots" / "figures.json").read_text())["skipped"]
-check(r.returncode == 0 and sorted(skipped) == sorted(STEMS[1:5])
-      and all("skipped " + s in r.stderr for s in STEMS[1:5])
+check(r.returncode == 0 and sorted(skipped) == sorted(STEMS[1:6])
+      and all("skipped " + s in r.stderr for s in STEMS[1:6])
       and (bare / "plots" / "time_per_point.png").is_file(),
       "figures without their columns are skipped with a notice: %s / %s" % (skipped, r.stderr))
 

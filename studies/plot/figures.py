@@ -275,13 +275,72 @@ def cavity_sizes(study):
         raise Skip("no ctr.cavity_simplices / ctr.max_cavity_simplices values in ok runs")
     files = _line_figure(
         study, curves, "cavity_sizes", "cavity sizes", "simplices", False,
-        "runs.csv records per run only the total and the largest cavity, not the distribution: "
+        "The distribution is the figure cavity_histogram. "
         "'mean' = ctr.cavity_simplices / distinct points (simplices removed per inserted point), "
         "'largest' = ctr.max_cavity_simplices; median over seeds and repeats of the ok runs. "
         "Only cavity-based algorithms have these counters.", panel_titles=titles,
         ncols=2 if len(present) == 2 else None)
     return dict(files=files, columns=present,
                 panels=_json_titled(curves, titles))
+
+
+def cavity_histogram(study):
+    """Per panel, at its largest n: the share of insertions whose cavity removed
+    1, 2-3, 4-7, ... simplices (ctr.cavity_size_* columns), summed over the ok runs."""
+    columns = study.counter_columns("ctr.cavity_size_")
+    rows = [r for r in study.ok if columns and any(r[c] for c in columns)]
+    if not rows:
+        raise Skip("no ctr.cavity_size_* values in ok runs")
+    largest = {}
+    for r in rows:
+        panel = rt.panel_of(r)
+        largest[panel] = max(largest.get(panel, 0), rt.n_of(r))
+    counts, runs = {}, {}
+    for r in rows:
+        panel = rt.panel_of(r)
+        if rt.n_of(r) != largest[panel]:
+            continue
+        series = rt.series_of(r, study.vary)
+        bucket = counts.setdefault(panel, {}).setdefault(series, [0] * len(columns))
+        for i, c in enumerate(columns):
+            bucket[i] += r[c] or 0
+        runs[panel] = runs.get(panel, 0) + 1
+    labels = [c[len("ctr.cavity_size_"):].replace("_up", "+").replace("_", "–") for c in columns]
+    panels = sorted(counts, key=_panel_sort_key)
+    ncols = min(3, len(panels))
+    nrows = math.ceil(len(panels) / ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(4.4 * ncols, 3.3 * nrows), squeeze=False)
+    all_series = sorted({s for p in panels for s in counts[p]}, key=study.series_key)
+    handles, data = {}, {}
+    for ax, panel in zip(axes.flat, panels):
+        panel_data = {}
+        for series in sorted(counts[panel], key=study.series_key):
+            total = sum(counts[panel][series])
+            shares = [100.0 * k / total for k in counts[panel][series]]
+            (line,) = ax.plot(range(len(columns)), shares, **study.style(series))
+            handles.setdefault(series, line)
+            panel_data[rt.series_label(series)] = dict(insertions=total, shares_percent=shares)
+        data[rt.panel_label(panel)] = dict(n=largest[panel], series=panel_data)
+        ax.set_xticks(range(len(columns)))
+        ax.set_xticklabels(labels)
+        ax.set_ylim(bottom=0)
+        ax.set_xlabel("simplices removed by one insertion")
+        ax.set_ylabel("share of insertions (%)")
+        ax.set_title("%s · n = %d · %d runs" % (rt.panel_label(panel), largest[panel], runs[panel]))
+        ax.grid(True, alpha=0.3)
+    for ax in list(axes.flat)[len(panels):]:
+        ax.set_visible(False)
+    fig.suptitle("%s — cavity-size distribution" % study.name, y=1.0)
+    fig.tight_layout()
+    fig.legend([handles[s] for s in all_series], [rt.series_label(s) for s in all_series],
+               loc="upper left", bbox_to_anchor=(1.0, 0.97), frameon=False)
+    _caption(fig, "Insertions by the number of simplices their cavity removed, in power-of-two "
+             "buckets (ctr.cavity_size_*; algorithms/cavity_histogram.hpp), as a share of all "
+             "insertions with a cavity, summed over the seeds and repeats of the ok runs at each "
+             "panel's largest n. Only cavity-based algorithms (bowyer-watson, george) have them.",
+             4.4 * ncols)
+    return dict(files=style.save(fig, study.out_dir, "cavity_histogram"), buckets=labels,
+                panels=data)
 
 
 def outcomes(study):
@@ -338,4 +397,5 @@ def outcomes(study):
 
 ALL = [("time_per_point", time_per_point), ("predicate_calls", predicate_calls),
        ("stage_shares", stage_shares), ("flips_per_point", flips_per_point),
-       ("cavity_sizes", cavity_sizes), ("outcomes", outcomes)]
+       ("cavity_sizes", cavity_sizes), ("cavity_histogram", cavity_histogram),
+       ("outcomes", outcomes)]
