@@ -3,61 +3,57 @@ predicates", DCG 18 (1997): on random input the adaptive predicates cost about a
 as plain floating point, because the first, floating-point stage settles almost
 every call. Measured here at the level of a whole Delaunay triangulation.
 
-Usage: costs.py DLAB OUT_DIR. For uniform points in 2D and 3D (dlab gen, seeds 1-3),
-n = 10^4 and 10^5 (mp: 10^4 only), every kernel triangulates with bowyer-watson; the
-time is dlab's own `seconds` (the triangulation alone), best of 3 repeats per seed,
-then the median over the seeds. Writes OUT_DIR/costs.md and costs.json.
+Usage: costs.py OUT_DIR STUDY_DIR... -- the runs.csv of `dlab study costs_study.json`
+and `costs_study_mp.json` (bowyer-watson, every kernel, uniform points in 2D and 3D,
+seeds 1-3, n = 10^4 and 10^5, mp at 10^4 only, 3 repeats). The time is wall_seconds
+(the triangulation alone), best of the 3 repeats per seed, then the median over the
+seeds. Writes OUT_DIR/costs.md and costs.json.
 """
+import csv
 import json
 import pathlib
 import statistics
-import subprocess
 import sys
 
 KERNELS = ["float", "adaptive", "epsilon", "integer", "mp"]
-SIZES = [10_000, 100_000]
-SEEDS = [1, 2, 3]
-REPEATS = 3
+PREDICATES = ["orient2d", "incircle", "orient3d", "insphere"]
 FLOATING_STAGES = ("static", "filter", "A")
 
 
-def run(dlab, pts, kernel, stats):
-    subprocess.run([dlab, "triangulate", str(pts), "--kernel", kernel, "--stats", str(stats),
-                    "-o", "/dev/null"], check=True)
-    return json.loads(stats.read_text())
+def read_rows(study_dirs):
+    rows = []
+    for d in study_dirs:
+        with open(pathlib.Path(d) / "runs.csv", newline="") as f:
+            rows += list(csv.DictReader(f))
+    bad = [r for r in rows if r["outcome"] != "ok"]
+    if bad:
+        raise SystemExit("costs.py: run %s is %s, not ok" % (bad[0]["run"], bad[0]["outcome"]))
+    return rows
 
 
-def main(dlab, out_dir):
+def main(out_dir, study_dirs):
     out_dir = pathlib.Path(out_dir)
-    work = out_dir / "work"
-    work.mkdir(parents=True, exist_ok=True)
+    rows = read_rows(study_dirs)
     results = []
-    for dim in (2, 3):
-        for n in SIZES:
-            cell = {}
-            for kernel in KERNELS:
-                if kernel == "mp" and n > SIZES[0]:
-                    continue
-                per_seed, past, calls = [], 0, 0
-                for seed in SEEDS:
-                    pts = work / ("u%d_%d_%d.txt" % (dim, n, seed))
-                    if not pts.exists():
-                        subprocess.run([dlab, "gen", "uniform", "--dim", str(dim), "--n", str(n),
-                                        "--seed", str(seed), "-o", str(pts)], check=True)
-                    best = None
-                    for _ in range(REPEATS):
-                        s = run(dlab, pts, kernel, work / "stats.json")
-                        best = s["seconds"] if best is None else min(best, s["seconds"])
-                    per_seed.append(best / n * 1e6)
-                    pred = s["predicates"]
-                    calls += sum(v for k, v in pred.items() if "." not in k)
-                    past += sum(v for k, v in pred.items()
-                                if "." in k and k.split(".", 1)[1] not in FLOATING_STAGES)
-                cell[kernel] = dict(us_per_point=statistics.median(per_seed), seeds=per_seed,
-                                    calls=calls, past_filters=past if kernel == "adaptive" else None)
-                print("uniform %dD n=%d %s: %.3f us/point" % (dim, n, kernel, cell[kernel]["us_per_point"]),
-                      file=sys.stderr)
-            results.append(dict(dimension=dim, n=n, kernels=cell))
+    for dim, n in sorted({(int(r["dimension"]), int(r["n"])) for r in rows}):
+        cell = {}
+        for kernel in KERNELS:
+            runs = [r for r in rows if int(r["dimension"]) == dim and int(r["n"]) == n
+                    and r["kernel"] == kernel]
+            if not runs:
+                continue
+            seeds = sorted({int(r["seed"]) for r in runs})
+            per_seed = [min(float(r["wall_seconds"]) for r in runs if int(r["seed"]) == s) / n * 1e6
+                        for s in seeds]
+            # Calls and stages of one repeat per seed (the repeats make the same calls).
+            first = [r for r in runs if r["repeat"] == "0"]
+            calls = sum(int(r["pred." + p]) for r in first for p in PREDICATES)
+            past = sum(int(r[c]) for r in first for c in r
+                       if c.startswith("pred.") and c.count(".") == 2 and r[c]
+                       and c.split(".")[1] in PREDICATES and c.split(".")[2] not in FLOATING_STAGES)
+            cell[kernel] = dict(us_per_point=statistics.median(per_seed), seeds=per_seed,
+                                calls=calls, past_filters=past if kernel == "adaptive" else None)
+        results.append(dict(dimension=dim, n=n, kernels=cell))
     (out_dir / "costs.json").write_text(json.dumps(results, indent=1, sort_keys=True) + "\n")
     with open(out_dir / "costs.md", "w", encoding="utf-8") as f:
         f.write("Microseconds per point of a bowyer-watson triangulation of uniform points (median "
@@ -75,6 +71,6 @@ def main(dlab, out_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit("usage: costs.py DLAB OUT_DIR")
-    main(sys.argv[1], sys.argv[2])
+    if len(sys.argv) < 3:
+        raise SystemExit("usage: costs.py OUT_DIR STUDY_DIR...")
+    main(sys.argv[1], sys.argv[2:])
