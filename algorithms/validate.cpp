@@ -220,21 +220,22 @@ class Validator {
   static constexpr int V = D + 1;  // vertices per simplex
 
  public:
-  Validator(std::span<const Point<D>> pts, std::span<const std::uint32_t> simplices)
-      : p_(pts), in_(simplices) {}
+  Validator(std::span<const Point<D>> pts, std::span<const std::uint32_t> simplices,
+            std::vector<Offence>* offences = nullptr)
+      : p_(pts), in_(simplices), offences_(offences) {}
 
   ValidationReport run() {
     r_.dimension = D;
     r_.points = p_.size();
     if (in_.size() % V != 0) {  // a truncated simplex: report, nothing else is meaningful
-      flag(r_[Check::index_range], static_cast<std::int64_t>(in_.size() / V));
+      flag(Check::index_range, static_cast<std::int64_t>(in_.size() / V));
       r_.skipped = true;
       return r_;
     }
     m_ = in_.size() / V;
     r_.simplices = m_;
     if (p_.size() >= kNone || in_.size() / V >= kNone / V) {
-      flag(r_[Check::index_range], 0);  // more than 32-bit ids can address
+      flag(Check::index_range, 0);  // more than 32-bit ids can address
       r_.skipped = true;
       return r_;
     }
@@ -259,6 +260,12 @@ class Validator {
   }
 
  private:
+  // Counts the offence in the report; lists it too when the caller asked for all.
+  void flag(Check c, std::int64_t simplex, int facet = -1, std::int64_t point = -1) {
+    dlab::flag(r_[c], simplex, facet, point);
+    if (offences_ != nullptr) offences_->push_back({c, simplex, facet, point});
+  }
+
   const std::uint32_t* simplex(std::size_t s) const { return &v_[s * V]; }
   std::array<const Point<D>*, V> coords(std::size_t s) const {
     std::array<const Point<D>*, V> c{};
@@ -273,11 +280,11 @@ class Validator {
     for (std::size_t i = 0; i < in_.size(); ++i) {
       const std::uint32_t x = in_[i];
       if (x >= p_.size()) {
-        flag(r_[Check::index_range], static_cast<std::int64_t>(i / V), -1, x);
+        flag(Check::index_range, static_cast<std::int64_t>(i / V), -1, x);
         in_range = false;
         continue;
       }
-      if (first_[x] != x) flag(r_[Check::duplicate_reference], static_cast<std::int64_t>(i / V), -1, x);
+      if (first_[x] != x) flag(Check::duplicate_reference, static_cast<std::int64_t>(i / V), -1, x);
       v_[i] = first_[x];
     }
     return in_range;
@@ -289,7 +296,7 @@ class Validator {
       if (orientation<D>(k_, coords(s)) == Sign::positive)
         ok_[s] = 1;
       else
-        flag(r_[Check::orientation], static_cast<std::int64_t>(s));
+        flag(Check::orientation, static_cast<std::int64_t>(s));
     }
   }
 
@@ -308,7 +315,7 @@ class Validator {
           table.find_or_insert(hash_ids(ks), s, [&](std::uint32_t t) { return key(t) == ks; });
       if (found != kNone) {
         dup_[s] = 1;
-        flag(r_[Check::duplicate_simplex], s);
+        flag(Check::duplicate_simplex, s);
       }
     }
   }
@@ -331,14 +338,14 @@ class Validator {
         if (other == kNone) continue;
         if (nb_[other] != kNone || other / V == s) {  // third simplex, or a repeated vertex
           extra_[inc] = 1;
-          flag(r_[Check::non_manifold_facet], s, i);
+          flag(Check::non_manifold_facet, s, i);
           continue;
         }
         nb_[other] = inc;
         nb_[inc] = other;
         int q = 0;
         sorted_facet<D>(simplex(other / V), static_cast<int>(other % V), q);
-        if (q == parity) flag(r_[Check::facet_same_side], s, i);
+        if (q == parity) flag(Check::facet_same_side, s, i);
       }
     }
     for (std::size_t inc = 0; inc < m_ * V; ++inc) {
@@ -366,7 +373,7 @@ class Validator {
       if (outs[a]++ == 0) next[a] = b, edge_of[a] = static_cast<std::uint32_t>(inc);
       if (ins[b]++ == 0) prev[b] = a;
       if (outs[a] == 2 || ins[b] == 2)
-        flag(r_[Check::boundary_manifold], static_cast<std::int64_t>(inc / V), i);
+        flag(Check::boundary_manifold, static_cast<std::int64_t>(inc / V), i);
     }
     std::uint64_t minima = 0;
     std::int64_t first_min = -1;
@@ -374,7 +381,7 @@ class Validator {
       if (outs[v] == 0 && ins[v] == 0) continue;
       const std::int64_t s = edge_of[v] == kNone ? -1 : edge_of[v] / V;
       if (outs[v] != ins[v]) {
-        flag(r_[Check::boundary_manifold], s, -1, v);
+        flag(Check::boundary_manifold, s, -1, v);
         continue;
       }
       if (outs[v] != 1) continue;  // already reported
@@ -385,11 +392,11 @@ class Validator {
       const Sign turn = k_.orient2d(u, x, w);
       const bool straight_on = turn == Sign::zero && lex_compare<2>(u, x) == lex_compare<2>(x, w);
       if (turn == Sign::negative || (turn == Sign::zero && !straight_on))
-        flag(r_[Check::boundary_convex], s, static_cast<int>(edge_of[v] % V), v);
+        flag(Check::boundary_convex, s, static_cast<int>(edge_of[v] % V), v);
       // Only ok_ simplices give a meaningful turn; a bad one is reported already.
     }
     if (r_.boundary_facets > 0 && r_[Check::boundary_manifold].count == 0 && minima != 1)
-      flag(r_[Check::boundary_convex], first_min);
+      flag(Check::boundary_convex, first_min);
   }
 
   // 3D: boundary triangles with their induced (outward) orientation must form a
@@ -436,7 +443,7 @@ class Validator {
       if (other == kNone) continue;
       const std::uint32_t s = faces[id / 3] / V;
       if (mate[other] != kNone || ridge(other) != std::array<std::uint32_t, 2>{r[1], r[0]}) {
-        flag(r_[Check::boundary_manifold], s, static_cast<int>(faces[id / 3] % V));
+        flag(Check::boundary_manifold, s, static_cast<int>(faces[id / 3] % V));
         continue;
       }
       mate[other] = id;
@@ -452,18 +459,18 @@ class Validator {
       const Sign side = k_.orient3d(p_[f[0]], p_[f[1]], p_[f[2]], p_[far]);
       const Sign inner = k_.orient3d(p_[f[0]], p_[f[1]], p_[f[2]], p_[apex]);
       if (side != Sign::zero && side != inner)
-        flag(r_[Check::boundary_convex], s, static_cast<int>(faces[id / 3] % V), far);
+        flag(Check::boundary_convex, s, static_cast<int>(faces[id / 3] % V), far);
     }
     for (std::uint32_t id = 0; id < faces.size() * 3; ++id)
       if (mate[id] == kNone)
-        flag(r_[Check::boundary_manifold], faces[id / 3] / V, static_cast<int>(faces[id / 3] % V));
+        flag(Check::boundary_manifold, faces[id / 3] / V, static_cast<int>(faces[id / 3] % V));
     if (r_[Check::boundary_manifold].count != 0) return;
     // Closed surface: E = 3F/2. Euler characteristic V - E + F must be 2, connected.
     const std::int64_t euler = static_cast<std::int64_t>(boundary_vertices) -
                                static_cast<std::int64_t>(faces.size() * 3 / 2) +
                                static_cast<std::int64_t>(faces.size());
     if (euler != 2 || components_left != 1)
-      flag(r_[Check::boundary_manifold], faces[0] / V, static_cast<int>(faces[0] % V));
+      flag(Check::boundary_manifold, faces[0] / V, static_cast<int>(faces[0] % V));
   }
 
   void connectivity() {
@@ -472,7 +479,7 @@ class Validator {
     std::size_t components = 0;
     for (std::uint32_t s0 = 0; s0 < m_; ++s0) {
       if (seen[s0] || dup_[s0]) continue;
-      if (++components == 2) flag(r_[Check::disconnected], s0);
+      if (++components == 2) flag(Check::disconnected, s0);
       seen[s0] = 1;
       stack.push_back(s0);
       while (!stack.empty()) {
@@ -523,7 +530,7 @@ class Validator {
       }
       if (inside && ++degree >= 2 && other < 0) other = static_cast<std::int64_t>(t);
     }
-    if (degree != 1) flag(r_[Check::cover_degree], other >= 0 ? other : static_cast<std::int64_t>(s0));
+    if (degree != 1) flag(Check::cover_degree, other >= 0 ? other : static_cast<std::int64_t>(s0));
   }
 
   void missing_vertices() {
@@ -531,7 +538,7 @@ class Validator {
     std::vector<std::uint8_t> used(p_.size(), 0);
     for (std::uint32_t x : v_) used[x] = 1;
     for (std::uint32_t i = 0; i < p_.size(); ++i)
-      if (first_[i] == i && !used[i]) flag(r_[Check::missing_vertex], -1, -1, i);
+      if (first_[i] == i && !used[i]) flag(Check::missing_vertex, -1, -1, i);
   }
 
   void delaunay() {
@@ -543,7 +550,7 @@ class Validator {
       const Point<D>& far = p_[simplex(t)[o % V]];
       const Sign side = sphere_side<D>(k_, coords(s), far);
       if (side == Sign::positive)
-        flag(r_[Check::not_delaunay], static_cast<std::int64_t>(s), static_cast<int>(inc % V));
+        flag(Check::not_delaunay, static_cast<std::int64_t>(s), static_cast<int>(inc % V));
       else if (side == Sign::zero)
         ++r_.cospherical_facets;
     }
@@ -554,6 +561,7 @@ class Validator {
   std::span<const std::uint32_t> in_;
   std::size_t m_ = 0;
   ValidationReport r_;
+  std::vector<Offence>* offences_ = nullptr;
   std::vector<std::uint32_t> first_, v_, nb_;
   std::vector<std::uint8_t> ok_, dup_, extra_;
 };
@@ -624,6 +632,13 @@ ValidationReport validate(std::span<const Point3> points, std::span<const std::u
 ValidationReport validate(const PointSet& points, std::span<const std::uint32_t> simplices) {
   if (points.dimension == 3) return validate(std::span<const Point3>(points.p3), simplices);
   return validate(std::span<const Point2>(points.p2), simplices);
+}
+ValidationReport validate(const PointSet& points, std::span<const std::uint32_t> simplices,
+                          std::vector<Offence>& offences) {
+  offences.clear();
+  if (points.dimension == 3)
+    return Validator<3>(std::span<const Point3>(points.p3), simplices, &offences).run();
+  return Validator<2>(std::span<const Point2>(points.p2), simplices, &offences).run();
 }
 
 namespace {

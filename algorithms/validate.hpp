@@ -120,6 +120,19 @@ ValidationReport validate(std::span<const Point2> points, std::span<const std::u
 ValidationReport validate(std::span<const Point3> points, std::span<const std::uint32_t> simplices);
 ValidationReport validate(const PointSet& points, std::span<const std::uint32_t> simplices);
 
+// One flagged item: the check and its simplex / facet / point (-1 where none),
+// as in CheckResult. The overload below lists every one (not only the first of
+// each check), in the order found, for pictures (`dlab draw`); its report is
+// the same as validate()'s.
+struct Offence {
+  Check check;
+  std::int64_t simplex = -1;
+  int facet = -1;
+  std::int64_t point = -1;
+};
+ValidationReport validate(const PointSet& points, std::span<const std::uint32_t> simplices,
+                          std::vector<Offence>& offences);
+
 // For simplices given in either orientation (scipy.spatial.Delaunay's are
 // mixed): swaps the first two vertices of each simplex whose exact orientation
 // (the convention above, decided by the same exact kernel) is negative, so that

@@ -22,6 +22,8 @@ const char* const kUsage =
     "  dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]\n"
     "                                   flip a triangulation of INPUT toward Delaunay\n"
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
+    "  dlab draw POINTS SIMPLICES -o FILE.svg [--circles] [--labels]  2D picture, faults marked\n"
+    "                                   by the exact validator (dlab draw --help)\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
     "  dlab plot STUDY_DIR [--out DIR]  SVG + PNG figures of a study's runs.csv (dlab plot --help)\n"
     "  dlab fuzz --out DIR (--cases C | --budget T) [--algo LIST] [--kernel LIST] [--gen LIST]\n"
@@ -60,6 +62,7 @@ int main(int argc, char** argv) {
     if (cmd == "predicate") return dlab::cli::cmd_predicate(argc, argv);
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
+    if (cmd == "draw") return dlab::cli::cmd_draw(argc, argv);
     if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
     if (cmd == "plot") return dlab::cli::cmd_plot(argc, argv);
     if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
