@@ -210,3 +210,36 @@ def test_predicate_signs_by_hand():
         dlab.predicate("orient4d", "adaptive", a, b, c)
     with pytest.raises(ValueError, match="same number of rows"):
         dlab.predicate("orient2d", "adaptive", a, b, c[:2])
+
+
+def longest_stall_beside(call):
+    """Seconds of the longest pause of a Python loop in this thread while call() runs in another."""
+    import threading
+    import time
+    worker = threading.Thread(target=call)
+    ticks = [time.perf_counter()]
+    worker.start()
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+    worker.join()
+    ticks.append(time.perf_counter())
+    return max(np.diff(ticks))
+
+
+def test_the_gil_is_released_while_triangulating():
+    import time
+    pts = dlab.generate("uniform", 200000, 2, 3)
+    start = time.perf_counter()
+    dlab.triangulate(pts)
+    alone = time.perf_counter() - start
+    assert alone > 0.05
+    # Holding the GIL the call would stall the loop for the whole run, every time;
+    # released, the loop waits only for the worker's short Python parts (switch
+    # interval 5 ms) and for the scheduler: on a loaded machine one of three tries
+    # has to show it.
+    stalls = []
+    for _ in range(3):
+        stalls.append(longest_stall_beside(lambda: dlab.triangulate(pts)))
+        if stalls[-1] < alone / 2:
+            break
+    assert min(stalls) < alone / 2, (alone, stalls)
