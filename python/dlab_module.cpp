@@ -190,7 +190,9 @@ py::dict check(const py::handle& points, const py::handle& simplices, const std:
   d["valid"] = rep.valid();
   d["delaunay"] = rep.delaunay();
   d["problems"] = problems;
-  d["summary"] = rep.summary();
+  std::string summary = rep.summary();
+  while (!summary.empty() && summary.back() == '\n') summary.pop_back();
+  d["summary"] = summary;  // the lines `dlab check` prints
   d["dimension"] = rep.dimension;
   d["points"] = rep.points;
   d["distinct_points"] = rep.distinct_points;

@@ -118,6 +118,31 @@ def test_bad_input_raises_value_error(tmp_path):
         assert str(e.value) == message
 
 
+def test_other_errors_are_the_commands():
+    z = np.zeros((1, 2))
+    for call, args in ((lambda: dlab.predicate("orient2d", "bogus", z, z, z),
+                        ("predicate", "orient2d", "bogus", "0", "0", "1", "1", "2", "2")),
+                       (lambda: dlab.predicate("orient4d", "mp", z, z, z),
+                        ("predicate", "orient4d", "mp", "0", "0", "1", "1", "2", "2")),
+                       (lambda: dlab.generate("nosuch", 10), ("gen", "nosuch", "--n", "10")),
+                       (lambda: dlab.generate("coplanar", 10, 2), ("gen", "coplanar", "--n", "10", "--dim", "2"))):
+        r = cli(*args)
+        assert r.returncode == 2
+        with pytest.raises(ValueError) as e:
+            call()
+        assert str(e.value) == r.stderr.strip().split(": ", 1)[1]
+
+
+def test_check_summary_is_the_commands(tmp_path):
+    pts = np.array([[0, 0], [1, 0], [0, 1], [1, 1.0]])
+    simplices = [[0, 3, 1], [0, 3, 2]]
+    write_points(tmp_path / "p.txt", pts)
+    (tmp_path / "s.txt").write_text("".join(" ".join(map(str, s)) + "\n" for s in simplices))
+    r = cli("check", str(tmp_path / "p.txt"), str(tmp_path / "s.txt"))
+    assert r.returncode == 1
+    assert r.stdout.strip().endswith(dlab.check(pts, simplices)["summary"])
+
+
 def lattice(side, dim):
     axes = np.meshgrid(*[np.arange(side, dtype=float)] * dim, indexing="ij")
     return np.stack([a.ravel() for a in axes], axis=1)
@@ -152,7 +177,7 @@ def test_qhull_without_joggle_on_kettners_grid():
 
 
 def test_cocircular_points_stay_valid_delaunay():
-    pts = dlab.generate("cospherical", 60, 2, 1)
+    pts = dlab.generate("cocircular", 60, 2, 1)
     r = np.hypot(pts[:, 0], pts[:, 1])
     assert np.all(r == r[0])  # exactly on one circle (integer coordinates times a power of two)
     for algo in ("bowyer-watson", "lawson", "tanemura", "george"):
