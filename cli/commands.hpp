@@ -7,6 +7,7 @@ namespace dlab::cli {
 
 int cmd_triangulate(int argc, char** argv);
 int cmd_check(int argc, char** argv);
+int cmd_convert(int argc, char** argv);
 int cmd_predicate(int argc, char** argv);
 int cmd_gen(int argc, char** argv);
 int cmd_demo(int argc, char** argv);

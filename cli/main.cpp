@@ -17,6 +17,8 @@ const char* const kUsage =
     "                   [--location walk|scan] [--stats FILE.json] [--validate]\n"
     "  dlab check INPUT SIMPLICES [--orientation positive|any]\n"
     "                                   exact validity + Delaunay check (exit 0 iff valid Delaunay)\n"
+    "  dlab convert POINTS OUT [--simplices SIMPLICES]  to Triangle/TetGen .node, .vtu or .off\n"
+    "                                   by OUT's extension (dlab convert --help)\n"
     "  dlab predicate NAME K COORD...   NAME: orient2d incircle orient3d insphere; prints -1, 0 or 1\n"
     "  dlab gen GENERATOR [--decimal] [options]  a point set (dlab gen --help lists generators)\n"
     "  dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]\n"
@@ -59,6 +61,7 @@ int main(int argc, char** argv) {
   try {
     if (cmd == "triangulate") return dlab::cli::cmd_triangulate(argc, argv);
     if (cmd == "check") return dlab::cli::cmd_check(argc, argv);
+    if (cmd == "convert") return dlab::cli::cmd_convert(argc, argv);
     if (cmd == "predicate") return dlab::cli::cmd_predicate(argc, argv);
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);

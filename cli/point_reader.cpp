@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cli/mesh_formats.hpp"
 #include "cli/numbers.hpp"
 
 namespace dlab::io {
@@ -282,6 +283,7 @@ PointSet read_points(std::istream& in, const std::string& name, bool node_format
 
 PointSet read_points(const std::string& path) {
   if (path == "-") return read_points(std::cin, display_name(path), false);
+  if (is_vertex_list_file(path)) return read_vertex_list(path);  // .xyz .off .ply
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read: is a directory");
   std::ifstream file(path, std::ios::binary);

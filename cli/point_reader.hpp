@@ -6,7 +6,8 @@
 //  * Triangle / TetGen .node files (chosen by the file name's extension):
 //    header "<#points> <dimension> <#attributes> <#boundary markers>", then
 //    "index x y [z] [attributes...] [marker]" with indices numbered
-//    consecutively from 0 or from 1.
+//    consecutively from 0 or from 1;
+//  * the vertex lists of .xyz, .off and ASCII .ply files (mesh_formats.hpp).
 // Every problem is an InputError whose message is "FILE:LINE: problem" (or
 // "FILE: problem" when no line applies, e.g. a file that cannot be opened).
 #pragma once
