@@ -141,12 +141,20 @@ dlab("convert", "p3.txt", "m3.vtu", "--simplices", "t3.txt")
 m = meshio.read(path("m3.vtu"))
 same_points(m.points, p3, "m3.vtu")
 same_cells(m, "tetra", t3, "m3.vtu")
-check(all(det3(*(p3[v] for v in c)) > 0 for c in m.cells[0].data.tolist()),
+check(all(len(c) == 4 and det3(*(p3[v] for v in c)) > 0 for c in m.cells[0].data.tolist()),
       "m3.vtu: VTK_TETRA cells have positive volume")
 dlab("convert", "p3.txt", "pts3.vtu")
 m = meshio.read(path("pts3.vtu"))
 same_points(m.points, p3, "pts3.vtu (points only)")
 same_cells(m, "vertex", [[i] for i in range(len(p3))], "pts3.vtu (points only)")
+
+# Same input, same bytes.
+for out in ("m2.node", "m2.neigh", "m2.vtu", "m2.off", "m3.face", "m3.vtu"):
+    first = open(path(out), "rb").read()
+    base, ext = os.path.splitext(out)
+    dlab("convert", "p2.txt" if out.startswith("m2") else "p3.txt", base + "_rerun" + (".node" if ext in (
+        ".node", ".neigh", ".face") else ext), "--simplices", "t2.txt" if out.startswith("m2") else "t3.txt")
+    check(open(path(base + "_rerun" + ext), "rb").read() == first, f"{out}: not byte-identical on a rerun")
 
 # --- TetGen accepts our .node and builds the same Delaunay tetrahedra (general position)
 if shutil.which("tetgen"):
