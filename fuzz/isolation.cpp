@@ -12,21 +12,12 @@
 #include <utility>
 
 #include "fuzz/case_runner.hpp"
+#include "fuzz/child_io.hpp"
 #include "fuzz/child_limits.hpp"
 #include "fuzz/record.hpp"
 
 namespace dlab::fuzz {
 namespace {
-
-void write_all(int fd, const std::string& s) {
-  std::size_t done = 0;
-  while (done < s.size()) {
-    const ssize_t w = ::write(fd, s.data() + done, s.size() - done);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) _exit(1);  // the parent is gone
-    done += static_cast<std::size_t>(w);
-  }
-}
 
 // The child: runs the span, one line per case x pair, then exits without
 // running the parent's destructors or flushing its buffers.
@@ -62,22 +53,6 @@ void write_all(int fd, const std::string& s) {
   _exit(0);
 }
 
-const char* signal_name(int sig) {
-  switch (sig) {
-    case SIGSEGV: return "SIGSEGV";
-    case SIGABRT: return "SIGABRT";
-    case SIGBUS: return "SIGBUS";
-    case SIGFPE: return "SIGFPE";
-    case SIGILL: return "SIGILL";
-    case SIGKILL: return "SIGKILL";
-    case SIGTERM: return "SIGTERM";
-    case SIGTRAP: return "SIGTRAP";
-    case SIGPIPE: return "SIGPIPE";
-    case SIGINT: return "SIGINT";
-    case SIGXFSZ: return "SIGXFSZ";
-    default: return nullptr;
-  }
-}
 
 std::string format_seconds(double s) {
   std::string t = std::to_string(s);

@@ -7,7 +7,6 @@
 #include <string>
 
 namespace dlab::fuzz {
-namespace {
 
 std::string clock_text(double seconds) {
   const long s = seconds < 0 ? 0 : static_cast<long>(seconds + 0.5);
@@ -18,8 +17,6 @@ std::string clock_text(double seconds) {
     std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
   return buf;
 }
-
-}  // namespace
 
 Progress::Progress(std::optional<std::uint64_t> total, std::optional<std::chrono::steady_clock::time_point> deadline)
     : enabled_(isatty(STDERR_FILENO) == 1), total_(total), deadline_(deadline),

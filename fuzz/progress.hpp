@@ -5,8 +5,12 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace dlab::fuzz {
+
+// "m:ss", or "h:mm:ss" from an hour on (negative: 0:00).
+std::string clock_text(double seconds);
 
 class Progress {
  public:

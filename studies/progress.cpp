@@ -7,20 +7,11 @@
 #include <cstdio>
 #include <string>
 
+#include "fuzz/progress.hpp"
+
 namespace dlab::study {
-namespace {
 
-std::string clock_text(double seconds) {
-  const long s = seconds < 0 ? 0 : static_cast<long>(seconds + 0.5);
-  char buf[32];
-  if (s >= 3600)
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-  else
-    std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
-  return buf;
-}
-
-}  // namespace
+using fuzz::clock_text;
 
 Progress::Progress(std::uint64_t total, std::uint64_t already_done)
     : enabled_(isatty(STDERR_FILENO) == 1), total_(total), before_(already_done),

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "algorithms/validate.hpp"
+#include "fuzz/child_io.hpp"
 #include "fuzz/child_limits.hpp"
 #include "studies/inputs.hpp"
 #include "variants/outcome.hpp"
@@ -28,17 +29,10 @@
 namespace dlab::study {
 namespace {
 
-constexpr int kInputErrorExit = 87;
+using fuzz::signal_name;
+using fuzz::write_all;
 
-void write_all(int fd, const std::string& s) {
-  std::size_t done = 0;
-  while (done < s.size()) {
-    const ssize_t w = ::write(fd, s.data() + done, s.size() - done);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) _exit(1);  // the parent is gone
-    done += static_cast<std::size_t>(w);
-  }
-}
+constexpr int kInputErrorExit = 87;
 
 void send(int fd, const nlohmann::json& j) { write_all(fd, j.dump() + "\n"); }
 
@@ -154,22 +148,6 @@ nlohmann::json run_external(const PointSet& pts, const RunSpec& s, double timeou
   _exit(0);
 }
 
-const char* signal_name(int sig) {
-  switch (sig) {
-    case SIGSEGV: return "SIGSEGV";
-    case SIGABRT: return "SIGABRT";
-    case SIGBUS: return "SIGBUS";
-    case SIGFPE: return "SIGFPE";
-    case SIGILL: return "SIGILL";
-    case SIGKILL: return "SIGKILL";
-    case SIGTERM: return "SIGTERM";
-    case SIGTRAP: return "SIGTRAP";
-    case SIGPIPE: return "SIGPIPE";
-    case SIGINT: return "SIGINT";
-    case SIGHUP: return "SIGHUP";
-    default: return nullptr;
-  }
-}
 
 Counters counters_from(const nlohmann::json& a) {
   Counters c;
