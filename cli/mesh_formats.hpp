@@ -47,7 +47,18 @@ std::vector<std::string> write_mesh(const std::string& path, MeshFormat format,
 // write_node_files: BASE.node [+ BASE.ele + BASE.neigh (2D) / BASE.face (3D)].
 std::vector<std::string> write_node_files(const std::string& base, const PointSet& points,
                                           const std::vector<std::uint32_t>* simplices);
-std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* simplices);
+// Integer arrays attached to the cells or the points of a .vtu (ParaView
+// colours by them): CellData / PointData, each a named UInt32 DataArray with
+// one value per cell / point.
+struct VtuArray {
+  std::string name;
+  std::vector<std::uint32_t> values;
+};
+struct VtuData {
+  std::vector<VtuArray> cell, point;
+};
+std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* simplices,
+                     const VtuData& data = {});
 std::string off_text(const PointSet& points, const std::vector<std::uint32_t>* simplices);
 // Writes text to path; InputError "PATH: cannot write: reason".
 void write_text_file(const std::string& path, const std::string& text);

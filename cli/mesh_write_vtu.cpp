@@ -1,15 +1,35 @@
 // See mesh_formats.hpp: VTK XML UnstructuredGrid, ASCII (Kitware, "VTK File
 // Formats", XML file formats). Cell types: VTK_VERTEX = 1, VTK_TRIANGLE = 5,
 // VTK_TETRA = 10; VTK_TETRA's positive orientation (v3 on the side of
-// (v1-v0) x (v2-v0)) is SIMPLICES' det[v1-v0; v2-v0; v3-v0] > 0.
+// (v1-v0) x (v2-v0)) is SIMPLICES' det[v1-v0; v2-v0; v3-v0] > 0. CellData and
+// PointData precede Points and Cells in a Piece, as that document orders them.
+#include <stdexcept>
 #include <string>
 
 #include "cli/mesh_formats.hpp"
 #include "cli/numbers.hpp"
 
 namespace dlab::io {
+namespace {
 
-std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* simplices) {
+// "      <CellData>...</CellData>\n", or nothing without arrays.
+std::string data_block(const char* tag, const std::vector<VtuArray>& arrays, std::size_t count) {
+  if (arrays.empty()) return {};
+  std::string s = std::string("      <") + tag + ">\n";
+  for (const VtuArray& a : arrays) {
+    if (a.values.size() != count)
+      throw std::logic_error("vtu_text: array '" + a.name + "' has the wrong length");
+    s += "        <DataArray type=\"UInt32\" Name=\"" + a.name + "\" format=\"ascii\">\n";
+    for (std::uint32_t v : a.values) s += std::to_string(v) + '\n';
+    s += "        </DataArray>\n";
+  }
+  return s + "      </" + tag + ">\n";
+}
+
+}  // namespace
+
+std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* simplices,
+                     const VtuData& data) {
   const std::size_t n = points.size();
   const std::size_t k = simplices ? static_cast<std::size_t>(points.dimension) + 1 : 1;
   const std::size_t cells = simplices ? simplices->size() / k : n;
@@ -20,7 +40,8 @@ std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* s
       "header_type=\"UInt64\">\n"
       "  <UnstructuredGrid>\n"
       "    <Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfCells=\"" +
-      std::to_string(cells) + "\">\n"
+      std::to_string(cells) + "\">\n" +
+      data_block("PointData", data.point, n) + data_block("CellData", data.cell, cells) +
       "      <Points>\n"
       "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < n; ++i) {

@@ -15,25 +15,16 @@
 // per marked edge (a < b, input indices); one <circle class="missing"
 // data-point="i"> per input point that is not a vertex.
 #pragma once
-#include <array>
 #include <cstdint>
 #include <ostream>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "cli/mesh_marks.hpp"
 #include "predicates/point.hpp"
 
 namespace dlab::cli {
-
-struct MeshMarks {
-  std::vector<std::array<std::uint32_t, 2>> non_delaunay_edges;  // a < b
-  std::vector<std::array<std::uint32_t, 2>> overlap_edges;       // a < b
-  std::vector<std::uint8_t> inverted;     // per simplex: not positively oriented
-  std::vector<std::uint8_t> overlapping;  // per simplex: overlaps another
-  std::vector<std::uint8_t> missing;      // per point: not a vertex
-  std::vector<std::string> other;         // further failed checks, one line each
-};
 
 struct SvgMeshOptions {
   bool circles = false;  // circumcircles of the positively oriented triangles

@@ -13,7 +13,9 @@
 #                           as an overlap)
 # a flipped 30-point mesh (dlab flip --make-start) -> as many marked edges as
 # `dlab check` counts; every SVG parses as XML (xml.etree); output repeats
-# byte for byte; bad input (3D, index out of range, missing file) exits 2.
+# byte for byte; bad input (3D as SVG, index out of range, missing file)
+# exits 2; a 3D mesh gives a .vtu whose cell flags are checked on hand-made
+# tetrahedra (below).
 set -u
 DLAB=$1
 WORK=$2
@@ -83,7 +85,50 @@ cmp -s f30b.svg f30c.svg || fail "same input, different bytes"
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' > p3.txt
 printf '0 1 2 3\n' > t3.txt
 "$DLAB" draw p3.txt t3.txt -o x.svg 2>err.txt
-[ $? = 2 ] && grep -q 'p3.txt.*\.vtu' err.txt || fail "3D: $(cat err.txt)"
+[ $? = 2 ] && grep -q 'p3.txt.*\.vtu' err.txt || fail "3D as SVG: $(cat err.txt)"
+
+# 3D: a .vtu with per-cell flags. A bipyramid over the triangle (0,0,0)
+# (10,0,0) (0,10,0) with apexes 3 = (3,3,1) and 4 = (3,3,-1), split by the
+# triangle into two tetrahedra (both positive: det = 100): the sphere through
+# the triangle and 3 has centre (5,5,-20.5), R^2 = 470.25, and holds 4 at
+# squared distance 388.25 (by symmetry the other sphere holds 3), so each
+# tetrahedron has exactly one non-Delaunay facet.
+printf '0 0 0\n10 0 0\n0 10 0\n3 3 1\n3 3 -1\n' > bi.txt
+printf '0 1 2 3\n0 2 1 4\n' > bi2.txt
+# cells FILE: "faulty inverted overlapping non_delaunay_facets" per cell, then "missing=[...]"
+cells() {
+  "$PY" - "$1" <<'EOF'
+import sys, xml.etree.ElementTree as ET
+piece = ET.parse(sys.argv[1]).getroot().find("UnstructuredGrid/Piece")
+arr = {a.get("Name"): a.text.split() for a in piece.find("CellData")}
+pts = {a.get("Name"): a.text.split() for a in piece.find("PointData")}
+for c in range(int(piece.get("NumberOfCells"))):
+    print(*(arr[k][c] for k in ("faulty", "inverted", "overlapping", "non_delaunay_facets")))
+print("missing=[" + ",".join(str(i) for i, v in enumerate(pts["missing"]) if v != "0") + "]")
+EOF
+}
+"$DLAB" draw bi.txt bi2.txt -o bi2.vtu; rc=$?
+got=$(cells bi2.vtu | tr '\n' ';')
+[ $rc = 1 ] && [ "$got" = "1 0 0 1;1 0 0 1;missing=[];" ] || fail "3D two tets: rc=$rc $got"
+# The second tetrahedron reversed (det = -100): inverted; point 5 = (1,1,0) on
+# the shared triangle is no vertex: missing.
+printf '0 0 0\n10 0 0\n0 10 0\n3 3 1\n3 3 -1\n1 1 0\n' > bi5.txt
+printf '0 1 2 3\n0 1 2 4\n' > bi2r.txt
+"$DLAB" draw bi5.txt bi2r.txt -o bi2r.vtu; rc=$?
+got=$(cells bi2r.vtu | sed -n '2p;3p' | cut -d' ' -f1,2 | tr '\n' ';')
+[ $rc = 1 ] && [ "$got" = "1 1;missing=[5];" ] || fail "3D inverted + missing: rc=$rc $got"
+# One reversed tetrahedron alone: only "inverted" (and so "faulty") set.
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' > u.txt
+printf '0 2 1 3\n' > ur.txt
+"$DLAB" draw u.txt ur.txt -o ur.vtu; rc=$?
+got=$(cells ur.vtu | tr '\n' ';')
+[ $rc = 1 ] && [ "$got" = "1 1 0 0;missing=[];" ] || fail "3D reversed tetrahedron: rc=$rc $got"
+# The Delaunay tetrahedralisation (three tetrahedra around edge 3-4): no flag.
+"$DLAB" triangulate bi.txt -o bi3.txt && "$DLAB" draw bi.txt bi3.txt -o bi3.vtu; rc=$?
+got=$(cells bi3.vtu | tr '\n' ';')
+[ $rc = 0 ] && [ "$got" = "0 0 0 0;0 0 0 0;0 0 0 0;missing=[];" ] || fail "3D Delaunay: rc=$rc $got"
+"$PY" -c "import meshio; m = meshio.read('bi2.vtu'); assert m.cells[0].type == 'tetra' and len(m.cells[0].data) == 2" ||
+  fail "meshio cannot read the 3D picture"
 printf '0 3 2\n3 1 7\n' > range.txt
 "$DLAB" draw rhombus.txt range.txt -o x.svg 2>err.txt
 [ $? = 2 ] && grep -q 'range.txt:2' err.txt || fail "index out of range: $(cat err.txt)"
