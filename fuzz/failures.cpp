@@ -3,11 +3,14 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
+#include "cli/mesh_picture.hpp"
 #include "cli/point_writer.hpp"
 #include "fuzz/campaign_files.hpp"
 #include "fuzz/case_plan.hpp"
+#include "fuzz/failure_mesh.hpp"
 #include "fuzz/fuzz_outcome.hpp"
 #include "fuzz/shrink.hpp"
 
@@ -90,6 +93,16 @@ std::size_t FailureIndex::write(const std::string& dir, const CampaignSpec& spec
     const Pair pair = make_pair(r.algo, r.kernel);
     const ShrunkFailure shrunk =
         shrink_failure(gen::generate(plan.gen), pair, plan.order_seed, FailureClass{r.outcome, r.kind}, limits);
+    // A picture of the mesh the pair makes of the points written, where it
+    // makes one: not-delaunay and invalid results.
+    std::optional<cli::MeshPicture> picture;
+    fs::path picture_file;
+    if (r.outcome == "not-delaunay" || r.outcome == "invalid") {
+      if (const auto mesh = failure_mesh(shrunk.points, pair, plan.order_seed, limits)) {
+        picture = cli::mesh_picture(mesh->points, mesh->simplices);
+        picture_file = folder / (sig.file_stem() + picture->extension);
+      }
+    }
     std::ostringstream out;
     out << "# dlab fuzz failure: " << r.algo << " x " << r.kernel << ", " << r.dim << "D: " << r.outcome
         << (r.kind.empty() ? "" : " (" + r.kind + ")") << "\n"
@@ -102,8 +115,12 @@ std::size_t FailureIndex::write(const std::string& dir, const CampaignSpec& spec
         << (shrunk.shrunk ? "# detail of the points below: " + shrunk.detail + "\n" : "")
         << "# replay the points below: dlab triangulate failures/" << file.filename().string()
         << triangulate_options(pair, plan.order_seed) << "   (from DIR)\n";
+    if (picture)
+      out << "# picture of their mesh, faults marked by the exact validator: failures/"
+          << picture_file.filename().string() << "\n";
     io::write_points(out, shrunk.points, io::FloatFormat::hex);
     write_text_file(file.string(), out.str());
+    if (picture) write_text_file(picture_file.string(), picture->text);
     ++written;
   }
   return written;

@@ -9,6 +9,7 @@
 // the case, whether and how much it was shrunk, the command that replays the
 // file's points), then the points -- shrunk (shrink_failure) -- as
 // hexadecimal floats: a valid INPUT for `dlab triangulate` and `dlab shrink`.
+// Beside it, where the pair made a mesh of those points, its picture.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -59,7 +60,10 @@ class FailureIndex {
   void add(const PairRecord& r);
   std::size_t size() const { return first_.size(); }
   // Writes DIR/failures/STEM.txt for each signature that has no file yet,
-  // shrunk under `limits`; returns how many it wrote. Throws UsageError if it cannot write.
+  // shrunk under `limits`, and for not-delaunay and invalid failures a picture
+  // of the pair's mesh of those points, STEM.svg (2D) or STEM.vtu (3D), faults
+  // marked (fuzz/failure_mesh.hpp, cli/mesh_picture.hpp); returns how many
+  // point files it wrote. Throws UsageError if it cannot write.
   std::size_t write(const std::string& dir, const CampaignSpec& spec, const Limits& limits) const;
 
  private:

@@ -50,7 +50,7 @@ cmp -s full.out full/summary.txt || fail "full: summary.txt differs from the pri
 # One failure file per signature (algo, kernel, dim, outcome, kind) of the failures.
 signatures=$(grep -v -E '"outcome":"(ok|lower-dimensional)"' full/results.jsonl |
   sed -E 's/.*"algo":"([^"]*)","kernel":"([^"]*)".*"outcome":"([^"]*)","kind":"((\\.|[^"\\])*)".*/\1 \2 \3 \4/' | sort -u | wc -l)
-[ "$(ls full/failures | wc -l)" = "$signatures" ] || fail "full: $(ls full/failures | wc -l) failure files for $signatures signatures"
+[ "$(ls full/failures/*.txt | wc -l)" = "$signatures" ] || fail "full: $(ls full/failures/*.txt | wc -l) failure files for $signatures signatures"
 
 # A failure file replays its failure: its case from `dlab gen` fails (exit 1 from
 # triangulate), and the file's own points, shrunk by dlab shrink's algorithm, are
@@ -58,7 +58,7 @@ signatures=$(grep -v -E '"outcome":"(ok|lower-dimensional)"' full/results.jsonl 
 # by dlab triangulate.
 ls full/failures/bowyer-watson.float.* full/failures/lawson.float.* > /dev/null 2>&1 || fail "replay: no float failure file"
 fewer=0
-for f in full/failures/*; do
+for f in full/failures/*.txt; do
   replay=$(sed -n 's/^# replay: //p' "$f")
   gen_part=${replay%% | *}
   tri_part=${replay#* | }
@@ -83,6 +83,35 @@ grep '^{"case":23,' full/results.jsonl | cmp -s - case23.jsonl || fail "--case 2
 expect_rc 0 three "$DLAB" fuzz --algo bowyer-watson,lawson,tanemura --kernel adaptive,integer,mp,float \
   --gen cospherical,lattice,near-degenerate,coplanar --dim 3 --n 5..16 --seed 5 --cases 12 --out three
 grep -q 'exact pairs: 108 runs, 0 failures$' three.out || fail "three: $(tail -1 three.out)"
+
+# Each not-delaunay or invalid failure comes with a picture of the pair's mesh
+# of the file's points (2D: .svg), named in the file; it marks as many
+# non-Delaunay edges as `dlab check` counts non-locally-Delaunay facets in the
+# mesh `dlab triangulate` makes of the same points (an independent rerun).
+pictures=0
+for f in full/failures/*.txt near/failures/*.txt three/failures/*.txt; do
+  outcome=$(sed -n 's/^# dlab fuzz failure: [^,]*, [23]D: \([a-z-]*\).*/\1/p' "$f")
+  pic=$(sed -n 's/^# picture of their mesh, faults marked by the exact validator: failures\///p' "$f")
+  case $outcome in
+    not-delaunay | invalid) ;;
+    *) [ -z "$pic" ] || fail "picture: $f ($outcome) names a picture"; continue ;;
+  esac
+  [ -n "$pic" ] && [ -f "$(dirname "$f")/$pic" ] || { fail "picture: none for $f"; continue; }
+  pictures=$((pictures + 1))
+  tri_part=$(sed -n 's/^# replay the points below: dlab triangulate failures\/[^ ]* \(.*\)   (from DIR)$/\1/p' "$f")
+  $DLAB triangulate "$f" $tri_part -o mesh.txt > /dev/null 2>&1
+  want=$($DLAB check "$f" mesh.txt | sed -n 's/^not_delaunay: \([0-9]*\).*/\1/p')
+  case $pic in
+    *.svg)
+      got=$(grep -c 'class="edge-bad non-delaunay"' "$(dirname "$f")/$pic") ;;
+    *.vtu)  # each non-Delaunay facet counted once from each of its two cells
+      got=$(awk '/Name="non_delaunay_facets"/ { on = 1; next } /<\/DataArray>/ { on = 0 } on { s += $1 }
+                 END { print s / 2 }' "$(dirname "$f")/$pic") ;;
+  esac
+  [ "$got" = "${want:-0}" ] || fail "picture: $pic marks $got non-Delaunay facets, dlab check counts ${want:-0}"
+done
+ls near/failures/*.svg > /dev/null 2>&1 || fail "picture: no 2D picture"
+ls three/failures/*.vtu > /dev/null 2>&1 || fail "picture: no 3D picture"
 
 # ---- resume after a torn last line, and after kill -9 ----------------------
 mkdir torn && cp full/campaign.json torn/ && head -c 100000 full/results.jsonl > torn/results.jsonl
