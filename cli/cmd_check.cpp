@@ -8,7 +8,7 @@
 #include <iostream>
 
 #include "algorithms/validate.hpp"
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/point_reader.hpp"
 #include "cli/simplex_io.hpp"
@@ -16,27 +16,38 @@
 namespace dlab::cli {
 
 int cmd_check(int argc, char** argv) {
+  std::string input, simplices_path, orientation = "positive";
+  CommandLine cl("check", "usage: dlab check INPUT SIMPLICES [--orientation positive|any]\n",
+                 "Checks exactly that SIMPLICES is a triangulation of INPUT (every simplex positively\n"
+                 "oriented, no overlap, the hull covered, every distinct point a vertex) and that it is\n"
+                 "Delaunay (no point inside a simplex's circumsphere). Prints the verdict and, for each\n"
+                 "failed check, its count and its first offender.\n",
+                 "  dlab gen uniform --n 100 > p.txt && dlab triangulate p.txt -o t.txt\n"
+                 "  dlab check p.txt t.txt\n"
+                 "  dlab check p.txt scipy_simplices.txt --orientation any\n",
+                 "Exit status: 0 valid Delaunay, 1 not (invalid or not Delaunay), 2 bad input or usage.\n");
+  CLI::App& app = cl.app();
+  app.add_option("INPUT", input, "the points (as dlab triangulate reads them; '-': standard input)")
+      ->required();
+  app.add_option("SIMPLICES", simplices_path,
+                 "the triangulation: d+1 zero-based indices into INPUT per line ('-': standard input)")
+      ->required();
+  add_choice(app, "--orientation", orientation, {"positive", "any"},
+             "any: simplices may also be given negatively oriented (scipy's are mixed); they are\n"
+             "reoriented exactly first, and a flat simplex still fails");
+  if (auto rc = cl.parse(argc, argv, 2)) return *rc;
+  const bool any_orientation = orientation == "any";
   PointSet points;
   std::vector<std::uint32_t> simplices;
-  bool any_orientation = false;
   try {
-    const Args a = parse_args(argc, argv, 2, {"--orientation"}, {});
-    if (a.positional.size() != 2)
-      throw UsageError("usage: dlab check INPUT SIMPLICES [--orientation positive|any]");
-    const std::string orientation = a.get("--orientation").value_or("positive");
-    if (orientation != "positive" && orientation != "any")
-      throw UsageError("--orientation must be positive or any, not '" + orientation + "'");
-    any_orientation = orientation == "any";
-    if (a.positional[0] == "-" && a.positional[1] == "-")
+    if (input == "-" && simplices_path == "-")
       throw UsageError("INPUT and SIMPLICES cannot both be standard input");
-    points = io::read_points(a.positional[0]);
-    simplices = io::read_simplices(a.positional[1], points.dimension, points.size());
+    points = io::read_points(input);
+    simplices = io::read_simplices(simplices_path, points.dimension, points.size());
   } catch (const UsageError& e) {
-    std::cerr << "dlab check: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   } catch (const io::InputError& e) {
-    std::cerr << "dlab check: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
   const std::size_t reoriented = any_orientation ? orient_positively(points, simplices) : 0;
   const ValidationReport rep = validate(points, simplices);
