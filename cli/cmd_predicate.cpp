@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
 #include "cli/numbers.hpp"
@@ -32,10 +33,32 @@ int evaluate(const std::string& name, const std::string& kernel, const std::vect
 }  // namespace
 
 int cmd_predicate(int argc, char** argv) {
+  std::string name, kernel;
+  std::vector<std::string> coords;
+  CommandLine cl("predicate", "usage: dlab predicate NAME K COORD...\n",
+                 "Evaluates one predicate with one kernel and prints its sign: -1, 0 or 1 (Shewchuk's\n"
+                 "conventions: orient2d > 0 iff a, b, c are counterclockwise; incircle > 0 iff d is inside\n"
+                 "the circle through the counterclockwise a, b, c; orient3d > 0 iff d is below the plane of\n"
+                 "a, b, c seen counterclockwise from above; insphere > 0 iff e is inside the sphere of the\n"
+                 "positively oriented a, b, c, d). COORD: the points' coordinates in order, read as INPUT is\n"
+                 "(decimal or C99 hexadecimal floats; NaN, infinity, overflow and underflow rejected);\n"
+                 "negative numbers are coordinates, not options.\n",
+                 "  dlab predicate orient2d adaptive 0 0 1 0 0 1          # 1\n"
+                 "  dlab predicate incircle mp 0 0 1 0 0 1 1 1            # 0: cocircular\n"
+                 "  dlab predicate orient2d float 0x1.0000000000001p-1 0.5 12 12 24 24\n"
+                 "  dlab predicate insphere integer 0 0 0 1 0 0 0 1 0 0 0 -1 0.2 0.2 -0.2\n",
+                 "Exit status: 0 a sign printed, 2 bad usage or coordinate.\n");
+  CLI::App& app = cl.app();
+  // After NAME everything is positional: coordinates such as "-inf" or "-.5" too.
+  app.positionals_at_end(true);
+  app.add_option("NAME", name, "orient2d (3 points), incircle (4) in 2D; orient3d (4), insphere (5) in 3D")
+      ->required();
+  app.add_option("K", kernel, "the kernel: adaptive, integer, mp (exact); float, epsilon (inexact)")
+      ->required();
+  app.add_option("COORD", coords, "x y (2D) or x y z (3D) of each point in turn")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  if (auto rc = cl.parse(argc, argv, 2)) return *rc;
   try {
-    if (argc < 4)
-      throw UsageError("usage: dlab predicate NAME K COORD...  (NAME: orient2d incircle orient3d insphere)");
-    const std::string name = argv[2], kernel = argv[3];
     int dim = 0, npts = 0;
     if (name == "orient2d") dim = 2, npts = 3;
     else if (name == "incircle") dim = 2, npts = 4;
@@ -44,15 +67,15 @@ int cmd_predicate(int argc, char** argv) {
     else
       throw UsageError("unknown predicate '" + name +
                        "' (known: orient2d, incircle, orient3d, insphere)");
-    const int want = dim * npts, got = argc - 4;
-    if (got != want)
+    const std::size_t want = static_cast<std::size_t>(dim * npts);
+    if (coords.size() != want)
       throw UsageError(name + " takes " + std::to_string(want) + " coordinates (" +
-                       std::to_string(npts) + " points), found " + std::to_string(got));
+                       std::to_string(npts) + " points), found " + std::to_string(coords.size()));
     std::vector<double> c;
-    for (int i = 4; i < argc; ++i) {
-      const auto p = io::parse_double(argv[i]);
+    for (std::size_t i = 0; i < coords.size(); ++i) {
+      const auto p = io::parse_double(coords[i]);
       if (p.status != io::ParseStatus::ok)
-        throw UsageError("argument " + std::to_string(i - 3) + ": " + io::describe(p.status, argv[i]));
+        throw UsageError("argument " + std::to_string(i + 1) + ": " + io::describe(p.status, coords[i]));
       c.push_back(p.value);
     }
     int s = 0;
@@ -63,8 +86,7 @@ int cmd_predicate(int argc, char** argv) {
     std::cout << s << "\n";
     return 0;
   } catch (const UsageError& e) {
-    std::cerr << "dlab predicate: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
 }
 
