@@ -11,15 +11,16 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <optional>
+#include <utility>
 #include <string_view>
 
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
 #include "cli/outcome_report.hpp"
 #include "cli/point_reader.hpp"
 #include "cli/point_writer.hpp"
+#include "cli/run_choices.hpp"
 #include "cli/simplex_io.hpp"
 #include "cli/stats_json.hpp"
 #include "variants/outcome.hpp"
@@ -31,7 +32,7 @@ namespace {
 // so that an unwritable path is a usage error at once. "-" or absent: stdout.
 class Output {
  public:
-  explicit Output(const std::optional<std::string>& path) : path_(path.value_or("-")) {
+  explicit Output(std::string path) : path_(std::move(path)) {
     if (path_ != "-") {
       file_.open(path_, std::ios::binary);
       if (!file_) throw UsageError("cannot write '" + path_ + "'");
@@ -51,71 +52,78 @@ class Output {
 
 }  // namespace
 
-const char* const kTriangulateUsage =
-    "usage: dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
-    "         [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]\n"
-    "         [--points-out FILE [--decimal]] [--stats FILE.json] [--validate]\n"
-    "         [--exact-sphere] [--enclosing-box]\n"
-    "A: bowyer-watson (default), lawson, tanemura, george (--exact-sphere: exact circumsphere test\n"
-    "instead of George's floating one; --enclosing-box: the paper's box instead of a ghost vertex).\n"
-    "K: adaptive (default), integer, mp (exact); float, epsilon (inexact baselines).\n"
-    "--location: point location of bowyer-watson and lawson: walk (default; the visibility walk\n"
-    "from the last insertion) or scan (every live simplex tested in storage order: O(n^2);\n"
-    "counter scan_tests).\n"
-    "--validate: the exact validator judges the result of an exact pair too (it may take longer\n"
-    "than the triangulation; not counted in seconds or peak_rss_bytes).\n";
-
 int cmd_triangulate(int argc, char** argv) {
   RunOptions opt;
-  Args a;
+  opt.policy.clear();  // sos for exact kernels, strict for the inexact baselines
+  std::string input, simplex_path = "-", points_path, stats_path;
+  bool validate = false, decimal = false;
+  CommandLine cl(
+      "triangulate",
+      "usage: dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
+      "         [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]\n"
+      "         [--points-out FILE [--decimal]] [--stats FILE.json] [--validate]\n"
+      "         [--exact-sphere] [--enclosing-box]\n",
+      "Triangulates INPUT with one algorithm x kernel pair and classifies the result: the exact\n"
+      "validator judges every result the pair does not promise to be Delaunay (inexact kernels,\n"
+      "George's floating sphere or box) and, with --validate, every result. Points the integer\n"
+      "kernel moves or merges are announced on stderr.\n"
+      "INPUT: one point per line (2 or 3 coordinates, decimal or hex floats), a Triangle/TetGen\n"
+      ".node file, or the vertices of a .xyz, .off or ASCII .ply file; '-': standard input.\n",
+      "  dlab gen uniform --n 1000 --seed 1 > p.txt\n"
+      "  dlab triangulate p.txt -o t.txt --stats s.json\n"
+      "  dlab triangulate p.txt --algo lawson --kernel float --validate -o t.txt\n"
+      "  dlab triangulate p.txt --algo george --exact-sphere --order hilbert --seed 7\n",
+      kOutcomeHelp);
+  CLI::App& app = cl.app();
+  app.add_option("INPUT", input, "the points")->required();
+  app.add_option("-o", simplex_path,
+                 "the simplices, d+1 zero-based indices per line, positively oriented (-: standard output)")
+      ->type_name("SIMPLICES")->default_str("-");
+  app.add_option("--algo", opt.algorithm, "bowyer-watson, lawson, tanemura, george")
+      ->type_name("A")->capture_default_str();
+  app.add_option("--kernel", opt.kernel, "adaptive, integer, mp (exact); float, epsilon (inexact)")
+      ->type_name("K")->capture_default_str();
+  add_choice(app, "--policy", opt.policy, kPolicies,
+             "degeneracies: sos (symbolic perturbation) or strict; default sos for exact kernels,\n"
+             "strict for float and epsilon");
+  add_choice(app, "--order", opt.order, kOrders, "insertion order (random, brio, hilbert: seeded)");
+  add_choice(app, "--location", opt.location, kLocations,
+             "point location of bowyer-watson and lawson: walk (the visibility walk from the last\n"
+             "insertion) or scan (every live simplex tested in storage order: O(n^2); counter\n"
+             "scan_tests)");
+  add_unsigned(app, "--seed", opt.seed, UINT64_MAX, "seed of the insertion order");
+  app.add_option("--points-out", points_path,
+                 "the coordinates triangulated (after the integer kernel's snapping), in INPUT's order,\n"
+                 "as hexadecimal floats")->type_name("FILE");
+  app.add_flag("--decimal", decimal, "--points-out as shortest round-trip decimals instead");
+  app.add_option("--stats", stats_path, "one JSON object: the pair, sizes, seconds, peak memory, counters")
+      ->type_name("FILE.json");
+  app.add_flag("--validate", validate,
+               "the exact validator judges an exact pair's result too (not counted in seconds or\n"
+               "peak_rss_bytes)");
+  app.add_flag("--exact-sphere", opt.exact_sphere, "george: exact circumsphere test instead of George's floating one");
+  app.add_flag("--enclosing-box", opt.enclosing_box, "george: the paper's enclosing box instead of a ghost vertex");
+  if (auto rc = cl.parse(argc, argv, 2)) return *rc;
+  if (opt.policy.empty()) opt.policy = kernel_is_exact(opt.kernel) ? "sos" : "strict";
+
   PointSet points;
   std::unique_ptr<Output> simplex_out, points_out, stats_out;
-  for (int i = 2; i < argc; ++i)
-    if (std::string_view(argv[i]) == "--help") {
-      std::cout << kTriangulateUsage << kOutcomeHelp;
-      return 0;
-    }
   try {
-    a = parse_args(argc, argv, 2,
-                   {"-o", "--algo", "--kernel", "--policy", "--order", "--location", "--seed",
-                    "--points-out", "--stats"},
-                   {"--exact-sphere", "--enclosing-box", "--validate", "--decimal"});
-    if (a.positional.size() != 1)
-      throw UsageError(a.positional.empty() ? "missing INPUT"
-                                            : "unexpected argument '" + a.positional[1] + "'");
-    opt.algorithm = a.get("--algo").value_or(opt.algorithm);
-    opt.kernel = a.get("--kernel").value_or(opt.kernel);
-    // sos is the default for exact kernels; the inexact baselines run plain.
-    opt.policy = a.get("--policy").value_or(kernel_is_exact(opt.kernel) ? "sos" : "strict");
-    opt.order = a.get("--order").value_or(opt.order);
-    opt.location = a.get("--location").value_or(opt.location);
-    opt.seed = a.u64("--seed", opt.seed);
-    opt.exact_sphere = a.has("--exact-sphere");    // george only
-    opt.enclosing_box = a.has("--enclosing-box");  // george only
-    if (opt.policy != "sos" && opt.policy != "strict")
-      throw UsageError("--policy must be sos or strict, not '" + opt.policy + "'");
-    if (opt.order != "input" && opt.order != "random" && opt.order != "brio" && opt.order != "hilbert")
-      throw UsageError("--order must be input, random, brio or hilbert, not '" + opt.order + "'");
-    if (opt.location != "walk" && opt.location != "scan")
-      throw UsageError("--location must be walk or scan, not '" + opt.location + "'");
-    points = io::read_points(a.positional[0]);
-    simplex_out = std::make_unique<Output>(a.get("-o"));
-    if (auto p = a.get("--points-out")) points_out = std::make_unique<Output>(p);
-    if (auto p = a.get("--stats")) stats_out = std::make_unique<Output>(p);
+    points = io::read_points(input);
+    simplex_out = std::make_unique<Output>(simplex_path);
+    if (!points_path.empty()) points_out = std::make_unique<Output>(points_path);
+    if (!stats_path.empty()) stats_out = std::make_unique<Output>(stats_path);
   } catch (const UsageError& e) {
-    std::cerr << "dlab triangulate: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   } catch (const io::InputError& e) {
-    std::cerr << "dlab triangulate: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
 
   RunResult res;
   try {
     res = run(points, opt);
   } catch (const UsageError& e) {
-    std::cerr << "dlab triangulate: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   } catch (const std::exception& e) {  // an algorithm that throws has failed, not crashed
     res = RunResult{};
     res.dimension = points.dimension;
@@ -128,19 +136,18 @@ int cmd_triangulate(int argc, char** argv) {
   res.dimension = points.dimension;
   announce_snapping("triangulate", res);
   const Outcome outcome = classify(points, res, pair_is_exact(opt),
-                                   a.has("--validate") ? Validate::always : Validate::unless_exact);
+                                   validate ? Validate::always : Validate::unless_exact);
   print_outcome("triangulate", outcome, describe_pair(opt));
   try {
     simplex_out->write([&](std::ostream& out) { io::write_simplices(out, res.simplices, res.dimension); });
-    const auto format = a.has("--decimal") ? io::FloatFormat::decimal : io::FloatFormat::hex;
+    const auto format = decimal ? io::FloatFormat::decimal : io::FloatFormat::hex;
     if (points_out) points_out->write([&](std::ostream& out) { io::write_points(out, res.points, format); });
     if (stats_out) {
       const io::StatsRecord rec = stats_record(opt, points.size(), res, outcome, peak_rss);
       stats_out->write([&](std::ostream& out) { io::write_stats_json(out, rec); });
     }
   } catch (const UsageError& e) {
-    std::cerr << "dlab triangulate: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
   return exit_status(outcome.kind);
 }
