@@ -106,7 +106,7 @@ dlab_case(predicate_nan RC 2 ERR "NaN coordinate" ARGS predicate orient2d mp 0 0
 dlab_case(gen_unknown RC 2 ERR "unknown generator 'nope'" ARGS gen nope)
 dlab_case(gen_bad_dim RC 2 ERR "--dim" ARGS gen uniform --dim 4)
 dlab_case(gen_2d_only RC 2 ERR "2D only" ARGS gen kettner-grid --dim 3)
-dlab_case(demo_args RC 2 ERR "takes no arguments" ARGS demo extra)
+dlab_case(demo_args RC 2 ERR "^dlab demo: unexpected argument 'extra'\n$" ARGS demo extra)
 
 # ---- predicates: Shewchuk's signs, decimal and hex coordinates ----------------
 foreach(k mp float epsilon adaptive integer)
@@ -325,7 +325,7 @@ endif()
 set(version_re "^dlab ${VERSION} \\(delaunay-lab\\)\ncommit ([0-9a-f]+|unknown)[^\n]*\ncompiler [^\n]+\n$")
 dlab_case(version RC 0 OUT "${version_re}" ARGS --version)
 dlab_case(version_word RC 0 OUT "${version_re}" ARGS version)
-dlab_case(version_args RC 2 ERR "takes no arguments" ARGS --version now)
+dlab_case(version_args RC 2 ERR "^dlab --version: unexpected argument 'now'\n$" ARGS --version now)
 dlab_case(help_lists_options RC 0 OUT "--orientation positive\\|any.*--decimal.*--version" ARGS --help)
 
 # Numbers that are not what they say: 1e400 overflows, 1e-400 is not zero but
