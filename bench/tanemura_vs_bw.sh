@@ -2,7 +2,7 @@
 # Tanemura-Ogawa-Ogita against Bowyer-Watson on the same points, same kernel,
 # in the same run (papers/triangulation_costs.md, issue 17 section 3).
 #
-#   bench/tanemura_vs_bw.sh [-k KERNEL] [-r REPEAT] [-t TIMEOUT_S] [-c CASES] DLAB [DLAB2 ...]
+#   bench/tanemura_vs_bw.sh [-k KERNEL] [-r REPEAT] [-t TIMEOUT_S] [-c CASES] [-i] DLAB [DLAB2 ...]
 #
 # For each case (one `dlab gen` invocation), the points are generated once and
 # each binary runs Tanemura and Bowyer-Watson on them alternately, REPEAT times;
@@ -13,16 +13,24 @@
 # CASES: a file with one line per case, "LABEL | gen arguments"; the default is
 # every generator at 65 536 points in 2D and 20 000 in 3D, plus the two cases
 # of issue 17. Output: one markdown table row per case on stdout.
+# -i: instead of seconds, the instructions executed by the triangulation
+# (valgrind callgrind's Ir, collected only inside the driver's run_kernel: the
+# insertion order, the algorithm and the mapping of its output; not reading,
+# writing or validating). Deterministic and unaffected by other load on the
+# machine; one run each (REPEAT is ignored); callgrind runs about 50x slower,
+# so TIMEOUT_S applies to the run under valgrind. Shown in millions (M).
 set -euo pipefail
-kernel=adaptive repeat=3 timeout_s=300 cases=""
-while getopts "k:r:t:c:" o; do
+kernel=adaptive repeat=3 timeout_s=300 cases="" instr=""
+usage="usage: $0 [-k KERNEL] [-r REPEAT] [-t TIMEOUT_S] [-c CASES] [-i] DLAB [DLAB2 ...]"
+while getopts "k:r:t:c:i" o; do
   case $o in
     k) kernel=$OPTARG ;; r) repeat=$OPTARG ;; t) timeout_s=$OPTARG ;; c) cases=$OPTARG ;;
-    *) echo "usage: $0 [-k KERNEL] [-r REPEAT] [-t TIMEOUT_S] [-c CASES] DLAB [DLAB2 ...]" >&2; exit 2 ;;
+    i) instr=1 repeat=1 ;;
+    *) echo "$usage" >&2; exit 2 ;;
   esac
 done
 shift $((OPTIND - 1))
-[ $# -ge 1 ] || { echo "usage: $0 [-k KERNEL] [-r REPEAT] [-t TIMEOUT_S] [-c CASES] DLAB [DLAB2 ...]" >&2; exit 2; }
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
 bins=("$@")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -41,9 +49,18 @@ default_cases() {
   echo "3D cospherical 2000 | cospherical --dim 3 --n 2000 --seed 1"
 }
 
-# seconds of one run, or ">T" past the timeout, or "fail"
+# seconds (-i: millions of instructions) of one run, or ">T" past the timeout, or "fail"
 one_run() {  # bin algo points
   local rc=0
+  if [ -n "$instr" ]; then
+    timeout "$timeout_s" valgrind --tool=callgrind --callgrind-out-file="$work/cg.out" \
+      "--toggle-collect=void dlab::driver_detail::run_kernel*" \
+      "$1" triangulate "$3" --algo "$2" --kernel "$kernel" -o /dev/null >/dev/null 2>"$work/vg.txt" || rc=$?
+    if [ $rc -eq 124 ]; then echo ">$timeout_s"; return; fi
+    if [ $rc -ne 0 ]; then echo "fail"; return; fi
+    sed -n 's/^==[0-9]*== Collected : \([0-9]*\)$/\1/p' "$work/vg.txt" | awk '{printf "%.4g", $1 / 1e6}'
+    return
+  fi
   timeout "$timeout_s" "$1" triangulate "$3" --algo "$2" --kernel "$kernel" -o /dev/null \
     --stats "$work/s.json" 2>/dev/null || rc=$?
   if [ $rc -eq 124 ]; then echo ">$timeout_s"; return; fi
@@ -57,10 +74,12 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a ~ /^[0-9.eE+-]+$/ && b ~ /^[0-9
 header="| case | n |"
 rule="|---|---:|"
 for b in "${bins[@]}"; do
-  header+=" Tanemura s ($(basename "$b")) | BW s | ratio |"
+  unit=s; [ -n "$instr" ] && unit=MIr
+  header+=" Tanemura $unit ($(basename "$b")) | BW $unit | ratio |"
   rule+="---:|---:|---:|"
 done
-echo "kernel $kernel, median of $repeat, timeout ${timeout_s}s, $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+what="median of $repeat"; [ -n "$instr" ] && what="callgrind instructions (millions), one run"
+echo "kernel $kernel, $what, timeout ${timeout_s}s, $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "$header"
 echo "$rule"
 { if [ -n "$cases" ]; then cat "$cases"; else default_cases; fi; } | while IFS='|' read -r label args; do
