@@ -24,7 +24,7 @@ class HelpFormatter : public CLI::Formatter {
         description_(std::move(description)),
         examples_(std::move(examples)),
         epilogue_(std::move(epilogue)) {
-    column_width(28);
+    column_width(30);
   }
   std::string make_help(const CLI::App* app, std::string, CLI::AppFormatMode mode) const override {
     std::ostringstream out;
