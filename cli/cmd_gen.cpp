@@ -6,7 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/point_writer.hpp"
 #include "fuzz/generators.hpp"
@@ -14,9 +14,12 @@
 namespace dlab::cli {
 namespace {
 
-const char* const kGenHelp =
-    "usage: dlab gen GENERATOR [-o FILE] [--n N] [--dim 2|3] [--seed S] [--decimal] [options]\n"
-    "generators (N points unless said otherwise; 'exact' = integer coordinates, possibly scaled\n"
+const char* const kGenSynopsis =
+    "usage: dlab gen GENERATOR [-o FILE] [--n N] [--dim 2|3] [--seed S] [--decimal] [options]\n";
+
+const char* const kGenerators =
+    "Writes a seeded point set, one point per line: same arguments, same bytes on every machine.\n"
+    "Generators (N points unless said otherwise; 'exact' = integer coordinates, possibly scaled\n"
     "by a power of two, so the degeneracy is exact):\n"
     "  uniform          uniform in [--lo, --hi]^dim (default [0,1])\n"
     "  gaussian         Irwin-Hall approximation of N(0, --sigma^2) (default sigma 1)\n"
@@ -54,64 +57,65 @@ const char* const kGenHelp =
 }  // namespace
 
 int cmd_gen(int argc, char** argv) {
+  gen::GenOptions o;
+  std::string out_path = "-";
+  bool decimal = false, hex = false;
+  CommandLine cl("gen", kGenSynopsis, kGenerators,
+                 "  dlab gen uniform --n 1000 --seed 7 -o points.txt\n"
+                 "  dlab gen cospherical --n 200 --decimal > sphere.txt\n"
+                 "  dlab gen near-degenerate --base cocircular --ulps 4 --n 64 --seed 3\n"
+                 "  dlab gen binade-lattice --exp 52 --sign positive --n 100\n",
+                 "Exit status: 0, 2 bad usage (an unknown generator, an option out of range).\n");
+  CLI::App& app = cl.app();
+  app.add_option("GENERATOR", o.name, "one of the generators above")->required();
+  app.add_option("-o", out_path, "the points (-: standard output)")->type_name("FILE")->capture_default_str();
+  add_unsigned(app, "--n", o.n, std::uint64_t{1} << 28, "number of points");
+  add_integer(app, "--dim", o.dim, 2, 3, "dimension (default: 3 for cospherical and coplanar, else 2)")
+      ->default_str("");
+  add_unsigned(app, "--seed", o.seed, UINT64_MAX, "the seed");
+  app.add_flag("--decimal", decimal, "coordinates as shortest round-trip decimals (numpy.loadtxt)");
+  app.add_flag("--hex", hex, "coordinates as C99 hexadecimal floats (the default)")->excludes("--decimal");
+  add_unsigned(app, "--off", o.off, std::uint64_t{1} << 28, "collinear, coplanar: points off the line or plane");
+  add_integer(app, "--ulps", o.ulps, 0, 1 << 20, "near-degenerate, near-duplicates: largest move in ulps");
+  app.add_option("--base", o.base, "near-degenerate: the exact set to perturb (default cocircular/cospherical)")
+      ->type_name("GENERATOR");
+  add_unsigned(app, "--clusters", o.clusters, 1u << 24, "clustered: number of clusters");
+  add_real(app, "--sigma", o.sigma, "gaussian (default 1), clustered (default 0.01): standard deviation")
+      ->default_str("");
+  add_unsigned(app, "--copies", o.copies, std::uint64_t{1} << 28, "near-duplicates: copies of each point");
+  add_unsigned(app, "--side", o.side, 4096, "kettner-grid: side of the grid");
+  add_integer(app, "--exp", o.exp, -1074, 1023,
+              "huge (default 1000), tiny (default -1074): scale 2^E; binade-*, half-integers: the edge 2^E\n"
+              "(default seeded)")
+      ->type_name("E")->default_str("");
+  add_integer(app, "--step-exp", o.step_exp, -1074, 1023, "binade-lattice: lattice step 2^S (default seeded)")
+      ->type_name("S")->default_str("");
+  add_choice(app, "--sign", o.sign, {"positive", "negative", "mixed"},
+             "binade-*, half-integers: the axes' signs (mixed: seeded per axis)");
+  add_choice(app, "--set", o.set, {"A1", "A2", "B1", "B2"}, "kettner-hull: which failure set");
+  add_real(app, "--lo", o.lo, "uniform: lower end of the box");
+  add_real(app, "--hi", o.hi, "uniform: upper end of the box");
+  add_real(app, "--spacing", o.spacing, "pdb-like: grid spacing (angstroms)");
+  if (auto rc = cl.parse(argc, argv, 2)) return *rc;
+  o.exp_set = app.count("--exp") > 0;
+  o.step_exp_set = app.count("--step-exp") > 0;
   try {
-    const Args a = parse_args(argc, argv, 2,
-                              {"-o", "--n", "--dim", "--seed", "--off", "--ulps", "--base",
-                               "--clusters", "--sigma", "--copies", "--side", "--exp", "--set",
-                               "--lo", "--hi", "--step-exp", "--sign", "--spacing"},
-                              {"--decimal", "--hex", "--help"});
-    if (a.has("--help")) {
-      std::cout << kGenHelp;
-      return 0;
-    }
-    if (a.positional.size() != 1)
-      throw UsageError(a.positional.empty() ? "missing GENERATOR (dlab gen --help lists them)"
-                                            : "unexpected argument '" + a.positional[1] + "'");
-    if (a.has("--decimal") && a.has("--hex")) throw UsageError("--decimal and --hex exclude each other");
-    gen::GenOptions o;
-    o.name = a.positional[0];
-    o.n = a.u64("--n", o.n, std::uint64_t{1} << 28);
-    o.dim = static_cast<int>(a.i64("--dim", 0, 2, 3));
-    o.seed = a.u64("--seed", 0);
-    o.off = a.u64("--off", o.off, std::uint64_t{1} << 28);
-    o.ulps = a.i64("--ulps", o.ulps, 0, 1 << 20);
-    o.base = a.get("--base").value_or("");
-    o.clusters = a.u64("--clusters", o.clusters, 1u << 24);
-    o.sigma = a.real("--sigma", o.sigma);
-    o.copies = a.u64("--copies", o.copies, std::uint64_t{1} << 28);
-    o.side = a.u64("--side", o.side, 4096);
-    if (a.get("--exp")) {
-      o.exp = static_cast<int>(a.i64("--exp", 0, -1074, 1023));
-      o.exp_set = true;
-    }
-    if (a.get("--step-exp")) {
-      o.step_exp = static_cast<int>(a.i64("--step-exp", 0, -1074, 1023));
-      o.step_exp_set = true;
-    }
-    o.sign = a.get("--sign").value_or(o.sign);
-    o.set = a.get("--set").value_or(o.set);
-    o.lo = a.real("--lo", o.lo);
-    o.hi = a.real("--hi", o.hi);
-    o.spacing = a.real("--spacing", o.spacing);
-
     const PointSet ps = gen::generate(o);
-    const auto fmt = a.has("--decimal") ? io::FloatFormat::decimal : io::FloatFormat::hex;
-    if (auto path = a.get("-o"); path && *path != "-") {
-      std::ofstream out(*path, std::ios::binary);
-      if (!out) throw UsageError("cannot write '" + *path + "'");
+    const auto fmt = decimal ? io::FloatFormat::decimal : io::FloatFormat::hex;
+    if (out_path != "-") {
+      std::ofstream out(out_path, std::ios::binary);
+      if (!out) throw UsageError("cannot write '" + out_path + "'");
       io::write_points(out, ps, fmt);
-      if (!out.flush()) throw UsageError("error writing '" + *path + "'");
+      if (!out.flush()) throw UsageError("error writing '" + out_path + "'");
     } else {
       io::write_points(std::cout, ps, fmt);
       std::cout.flush();
     }
     return 0;
   } catch (const UsageError& e) {
-    std::cerr << "dlab gen: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   } catch (const std::invalid_argument& e) {
-    std::cerr << "dlab gen: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
 }
 
