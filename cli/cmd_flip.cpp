@@ -15,12 +15,10 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <string>
-#include <string_view>
 
 #include "algorithms/validate.hpp"
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
 #include "cli/outcome_report.hpp"
@@ -59,102 +57,107 @@ std::size_t point_line(const std::string& path, std::int64_t k) {
   return data_line(path, k < 0 ? k : k + (io::is_node_file(path) ? 1 : 0));
 }
 
-void write_out(const std::optional<std::string>& path, const std::vector<std::uint32_t>& s, int dim) {
-  if (!path || *path == "-") {
+void write_out(const std::string& path, const std::vector<std::uint32_t>& s, int dim) {
+  if (path == "-") {
     io::write_simplices(std::cout, s, dim);
     std::cout.flush();
     return;
   }
-  std::ofstream f(*path, std::ios::binary);
-  if (!f) throw UsageError("cannot write '" + *path + "'");
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw UsageError("cannot write '" + path + "'");
   io::write_simplices(f, s, dim);
-  if (!f.flush()) throw UsageError("error writing '" + *path + "'");
+  if (!f.flush()) throw UsageError("error writing '" + path + "'");
 }
 
 }  // namespace
 
-const char* const kFlipUsage =
-    "usage: dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]\n"
-    "       dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]\n"
-    "Flips SIMPLICES toward the Delaunay triangulation of INPUT (Lawson in 2D, Joe's flips in 3D,\n"
-    "which may get stuck: not-delaunay). SIMPLICES must triangulate INPUT -- checked by the exact\n"
-    "validator; otherwise exit 2 naming the file, line and check. K: adaptive (default), integer,\n"
-    "mp, float, epsilon. --make-start writes a valid, non-Delaunay start (K random flips).\n";
-
 int cmd_flip(int argc, char** argv) {
-  for (int i = 2; i < argc; ++i)
-    if (std::string_view(argv[i]) == "--help") {
-      std::cout << kFlipUsage << kOutcomeHelp;
-      return 0;
-    }
+  std::string input, simplices_path, out_path = "-", stats_path;
+  bool make = false;
+  std::uint64_t seed = 1, flips = 0;
   RunOptions opt;
   opt.algorithm = "flip";
   opt.order = "input";
   opt.location = "none";  // flips from a given triangulation locate nothing
-  Args a;
+  CommandLine cl(
+      "flip",
+      "usage: dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json]\n"
+      "       dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]\n",
+      "Flips SIMPLICES toward the Delaunay triangulation of INPUT (Lawson in 2D, Joe's flips in 3D,\n"
+      "which may get stuck: not-delaunay). SIMPLICES must triangulate INPUT -- checked by the exact\n"
+      "validator; otherwise exit 2 naming the file, line and check. --make-start writes a valid,\n"
+      "non-Delaunay start instead (the Delaunay triangulation with K random valid flips).\n",
+      "  dlab gen uniform --n 500 --seed 1 > p.txt\n"
+      "  dlab flip p.txt --make-start --seed 3 -o start.txt\n"
+      "  dlab flip p.txt start.txt --kernel float -o flipped.txt --stats flip.json\n",
+      kOutcomeHelp);
+  CLI::App& app = cl.app();
+  app.add_option("INPUT", input, "the points, as dlab triangulate reads them")->required();
+  app.add_option("SIMPLICES", simplices_path, "a triangulation of INPUT (not with --make-start)");
+  app.add_option("-o", out_path, "the result's simplices (-: standard output)")->type_name("OUT")->capture_default_str();
+  app.add_option("--kernel", opt.kernel, "adaptive, integer, mp (exact); float, epsilon (inexact)")
+      ->type_name("K")->capture_default_str();
+  app.add_option("--stats", stats_path, "one JSON object, as dlab triangulate --stats writes")->type_name("FILE.json");
+  app.add_flag("--make-start", make, "write a valid, non-Delaunay triangulation of INPUT instead");
+  add_unsigned(app, "--seed", seed, UINT64_MAX, "--make-start: seed of the random flips");
+  add_unsigned(app, "--flips", flips, std::uint64_t{1} << 40, "--make-start: number of random flips (0: n)")
+      ->type_name("K");
+  if (auto rc = cl.parse(argc, argv, 2)) return *rc;
+  if (make && !simplices_path.empty()) return cl.usage_error("--make-start takes INPUT only, not SIMPLICES");
+  if (!make && simplices_path.empty()) return cl.usage_error("missing SIMPLICES (or --make-start)");
+
   PointSet points;
   std::vector<std::uint32_t> in;
   std::size_t distinct = 0;
   std::unique_ptr<std::ofstream> stats;
   try {
-    a = parse_args(argc, argv, 2, {"-o", "--seed", "--flips", "--stats", "--kernel"}, {"--make-start"});
-    const bool make = a.has("--make-start");
-    if (a.positional.size() != (make ? 1u : 2u))
-      throw UsageError("usage: dlab flip INPUT SIMPLICES [-o OUT] [--kernel K] [--stats FILE.json] | "
-                       "dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]");
-    points = io::read_points(a.positional[0]);
+    points = io::read_points(input);
     const int dim = points.dimension;
     if (make) {
-      const std::uint64_t seed = a.u64("--seed", 1);
-      const std::size_t flips = a.u64("--flips", 0, 1ull << 40);
       const std::vector<std::uint32_t> s = dim == 2 ? non_delaunay_start<2>(points.p2, seed, flips)
                                                     : non_delaunay_start<3>(points.p3, seed, flips);
       if (s.empty()) {
         std::cerr << "dlab flip: the points are lower-dimensional: no triangulation\n";
         return 1;
       }
-      write_out(a.get("-o"), s, dim);
+      write_out(out_path, s, dim);
       return 0;
     }
-    opt.kernel = a.get("--kernel").value_or(opt.kernel);
     if (!kernel_available(opt.kernel))
       throw UsageError("unknown kernel '" + opt.kernel + "' (expected adaptive, integer, mp, float or epsilon)");
     opt.policy = kernel_is_exact(opt.kernel) ? "sos" : "strict";
-    in = io::read_simplices(a.positional[1], dim, points.size());
+    in = io::read_simplices(simplices_path, dim, points.size());
     // The given mesh must triangulate the points (design.md section 5: refused
     // with exit 2 otherwise): the exact validator decides, whatever the kernel.
     const ValidationReport given = validate(points, in);
     if (!given.valid()) {
       const Outcome why = classify_report(given, false);
       const CheckResult& first = given[why.first_check];
-      std::cerr << "dlab flip: " << io::display_name(a.positional[1]);
-      if (const std::size_t line = data_line(a.positional[1], first.simplex)) std::cerr << ":" << line;
-      std::cerr << ": not a triangulation of " << io::display_name(a.positional[0]) << ": " << why.detail;
+      std::cerr << "dlab flip: " << io::display_name(simplices_path);
+      if (const std::size_t line = data_line(simplices_path, first.simplex)) std::cerr << ":" << line;
+      std::cerr << ": not a triangulation of " << io::display_name(input) << ": " << why.detail;
       if (first.point >= 0 && why.first_check == Check::missing_vertex)
-        if (const std::size_t line = point_line(a.positional[0], first.point))
-          std::cerr << " (" << io::display_name(a.positional[0]) << ":" << line << ")";
+        if (const std::size_t line = point_line(input, first.point))
+          std::cerr << " (" << io::display_name(input) << ":" << line << ")";
       std::cerr << "\n";
       return 2;
     }
     distinct = given.distinct_points;
-    if (auto st = a.get("--stats")) {  // opened before the run: an unwritable path is a usage error now
-      stats = std::make_unique<std::ofstream>(*st, std::ios::binary);
-      if (!*stats) throw UsageError("cannot write '" + *st + "'");
+    if (!stats_path.empty()) {  // opened before the run: an unwritable path is a usage error now
+      stats = std::make_unique<std::ofstream>(stats_path, std::ios::binary);
+      if (!*stats) throw UsageError("cannot write '" + stats_path + "'");
     }
   } catch (const UsageError& e) {
-    std::cerr << "dlab flip: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   } catch (const io::InputError& e) {
-    std::cerr << "dlab flip: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
 
   RunResult res;
   try {
     res = run_flip(points, in, opt);
   } catch (const UsageError& e) {
-    std::cerr << "dlab flip: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   } catch (const std::exception& e) {  // a run that throws has failed, not crashed
     res = RunResult{};
     res.dimension = points.dimension;
@@ -174,15 +177,14 @@ int cmd_flip(int argc, char** argv) {
   const Outcome outcome = classify(points, res, exact_pair, Validate::always);
   print_outcome("flip", outcome, "flip, " + opt.kernel + " kernel");
   try {
-    write_out(a.get("-o"), res.simplices, points.dimension);
+    write_out(out_path, res.simplices, points.dimension);
     if (stats) {
       const io::StatsRecord rec = stats_record(opt, points.size(), res, outcome, peak_rss);
       io::write_stats_json(*stats, rec);
-      if (!stats->flush()) throw UsageError("error writing '" + *a.get("--stats") + "'");
+      if (!stats->flush()) throw UsageError("error writing '" + stats_path + "'");
     }
   } catch (const UsageError& e) {
-    std::cerr << "dlab flip: " << e.what() << "\n";
-    return 2;
+    return cl.usage_error(e.what());
   }
   return exit_status(outcome.kind);
 }

@@ -277,7 +277,7 @@ file(WRITE "${WORK}/kite_dup.txt" "0 3 2\n3 1 2\n0 3 2\n")
 dlab_case(flip_duplicate RC 2 ERR "^dlab flip: kite_dup.txt:3: not a triangulation of kite.txt: overlap: 1 simplex listed twice \\(first: simplex 2\\)" ARGS flip kite.txt kite_dup.txt)
 dlab_case(flip_range RC 2 ERR "kite_range.txt:2: vertex index 9 out of range" ARGS flip kite.txt kite_range.txt)
 dlab_case(flip_nan RC 2 ERR "nan.txt:2: NaN" ARGS flip nan.txt kite_delaunay.txt)
-dlab_case(flip_usage RC 2 ERR "usage: dlab flip" ARGS flip kite.txt)
+dlab_case(flip_usage RC 2 ERR "^dlab flip: missing SIMPLICES \\(or --make-start\\)\n$" ARGS flip kite.txt)
 dlab_case(flip_unknown_option RC 2 ERR "unknown option '--frob'" ARGS flip kite.txt kite_bad.txt --frob)
 
 # ---- every algorithm through the same contract ----------------------------------
