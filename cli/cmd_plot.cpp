@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 
 #ifndef DLAB_SOURCE_DIR
@@ -22,8 +22,7 @@
 namespace dlab::cli {
 namespace {
 
-const char* const kPlotHelp =
-    "usage: dlab plot STUDY_DIR [--out DIR]\n"
+const char* const kPlotDescription =
     "Draws the figures of a study (dlab study's STUDY_DIR/runs.csv, studies/README.md), each as\n"
     "SVG and PNG in DIR (default STUDY_DIR/plots), with matplotlib:\n"
     "  time_per_point    triangulation time per input point against n, log-log\n"
@@ -39,6 +38,9 @@ const char* const kPlotHelp =
     "Needs python3 with matplotlib and numpy (Debian: python3-matplotlib); /usr/bin/python3 is\n"
     "used when it exists. Environment: DLAB_PLOT_SCRIPT overrides the script's path (default\n"
     "<source dir>/studies/plot/dlab_plot.py).\n";
+const char* const kPlotExamples =
+    "  dlab study --default --out s1 && dlab plot s1\n"
+    "  dlab plot s1 --out figures\n";
 
 bool is_file(const std::string& path, bool executable) {
   struct stat st {};
@@ -50,21 +52,11 @@ bool is_file(const std::string& path, bool executable) {
 
 int cmd_plot(int argc, char** argv) {
   std::string study, out;
-  try {
-    const Args a = parse_args(argc, argv, 2, {"--out"}, {"--help"});
-    if (a.has("--help")) {
-      std::cout << kPlotHelp;
-      return 0;
-    }
-    if (a.positional.size() != 1)
-      throw UsageError(a.positional.empty() ? "missing STUDY_DIR (dlab plot --help)"
-                                            : "unexpected argument '" + a.positional[1] + "'");
-    study = a.positional[0];
-    out = a.get("--out").value_or("");
-  } catch (const UsageError& e) {
-    std::cerr << "dlab plot: " << e.what() << "\n";
-    return 2;
-  }
+  CommandLine cl("plot", "usage: dlab plot STUDY_DIR [--out DIR]\n", kPlotDescription, kPlotExamples,
+                 "Exit status: the script's: 0 drawn, 2 bad usage or an unreadable runs.csv.\n");
+  cl.app().add_option("STUDY_DIR", study, "a directory written by dlab study (its runs.csv)")->required();
+  cl.app().add_option("--out", out, "where the figures go (default STUDY_DIR/plots)")->type_name("DIR");
+  if (auto rc = cl.parse(argc, argv, 2)) return *rc;
   const char* env = std::getenv("DLAB_PLOT_SCRIPT");
   const std::string script =
       env && *env ? env : std::string(DLAB_SOURCE_DIR) + "/studies/plot/dlab_plot.py";
