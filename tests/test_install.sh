@@ -6,7 +6,7 @@
 # equal tests/install_consumer/expected.txt, written by hand. Also: the
 # installed `dlab` runs, and the installed Python module (when this build has
 # one) imports from the prefix and triangulates the square and its centre.
-# Usage: test_install.sh BUILD_DIR WORK_DIR [PYTHON3]
+# Usage: test_install.sh BUILD_DIR WORK_DIR [PYTHON3 (given when the build has the Python module)]
 set -euo pipefail
 build=$1 work=$2 python=${3:-}
 src=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,9 +32,11 @@ fi
 "$work/consumer/consumer" > "$work/consumer.out"
 diff -u "$src/tests/install_consumer/expected.txt" "$work/consumer.out"
 
-# The Python module, installed only with -DDLAB_PYTHON=ON.
-modules=("$prefix"/lib/python*/*-packages/dlab*.so)
-if [[ -n $python && -e ${modules[0]} ]]; then
+# The Python module, installed only with -DDLAB_PYTHON=ON (then PYTHON3 is given),
+# where the interpreter's own modules go: lib/python3.X/dist-packages on Debian.
+if [[ -n $python ]]; then
+  modules=("$prefix"/lib/python3*/*-packages/dlab.*.so)
+  [[ -e ${modules[0]} ]] || { echo "FAIL: no Python module dlab under $prefix/lib/python3*/*-packages" >&2; exit 1; }
   out=$(cd "$work" && PYTHONPATH=$(dirname "${modules[0]}") "$python" -c '
 import numpy as np, dlab
 assert dlab.__file__.startswith("'"$prefix"'"), dlab.__file__
