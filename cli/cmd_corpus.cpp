@@ -4,7 +4,7 @@
 #include <iostream>
 #include <string>
 
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/point_reader.hpp"
 #include "fuzz/campaign_spec.hpp"
@@ -14,11 +14,13 @@
 namespace dlab::cli {
 namespace {
 
-const char* const kCorpusHelp =
+const char* const kCorpusSynopsis =
     "usage: dlab corpus replay DIR|FILE... [--jobs J] [--timeout SEC] [--memory MIB]\n"
     "                          [--algo LIST] [--kernel LIST]\n"
     "       dlab corpus add INPUT --to DIR [--name NAME] [--source TEXT] [--exercises TEXT]\n"
-    "                       [--replace] [--jobs J] [--timeout SEC] [--memory MIB]\n"
+    "                       [--replace] [--jobs J] [--timeout SEC] [--memory MIB]\n";
+
+const char* const kCorpusDescription =
     "The regression corpus (tests/corpus/README.md): each case NAME.pts holds a header of\n"
     "'# key: value' lines (case, source, exercises, dimension, optional order-seed, and one\n"
     "'# expect: ALGO KERNEL OUTCOME' per pair of the 6 algorithms x 5 kernels), then its points\n"
@@ -36,86 +38,111 @@ const char* const kCorpusHelp =
     "        expect lines), or plain points with --source and --exercises. NAME defaults to\n"
     "        the case's name or INPUT's file name.\n"
     "        Refused (exit 1, nothing written): an exact pair that is not ok (a bug to fix,\n"
-    "        not to record), or any pair that times out (machine-dependent: never recorded).\n"
-    "  --jobs J       child processes at a time (1); the output does not depend on it\n"
-    "  --timeout SEC  CPU time per case x pair (60); --memory MIB: memory per child (4096)\n"
-    "Examples:\n"
+    "        not to record), or any pair that times out (machine-dependent: never recorded).\n";
+
+const char* const kCorpusExamples =
     "  dlab corpus replay tests/corpus --jobs 2\n"
     "  dlab corpus replay tests/corpus/issue17-half-integer-square.pts --kernel float,epsilon\n"
     "  dlab corpus add c1/failures/lawson.float.2d.not-delaunay.txt --to tests/corpus \\\n"
     "      --name lawson-float-near-lattice --exercises 'float flips a near-cocircular lattice wrongly'\n"
-    "  dlab corpus add tests/corpus/NAME.pts --to tests/corpus --replace\n"
+    "  dlab corpus add tests/corpus/NAME.pts --to tests/corpus --replace\n";
+
+const char* const kCorpusEpilogue =
     "Exit status: 0 (replay: no change); 1 replay: some outcome changed, add: refused;\n"
     "2 bad usage, an unreadable DIR or INPUT, a malformed case (FILE:LINE: problem), an\n"
     "existing case without --replace.\n";
 
-void read_limits(const Args& a, fuzz::Limits& limits, unsigned& jobs) {
-  if (a.get("--timeout")) limits.cpu_seconds = fuzz::parse_duration("--timeout", *a.get("--timeout"));
-  limits.memory_bytes = a.u64("--memory", 4096, std::uint64_t{1} << 24) << 20;
-  if (limits.memory_bytes == 0) throw UsageError("--memory must be at least 1 (MiB)");
-  jobs = static_cast<unsigned>(a.i64("--jobs", 1, 1, 256));
-}
+// --jobs, --timeout and --memory, shared by replay and add.
+struct LimitOptions {
+  unsigned jobs = 1;
+  std::string timeout;
+  std::uint64_t memory_mib = 4096;
+
+  explicit LimitOptions(CLI::App& app) {
+    add_integer(app, "--jobs", jobs, 1, 256, "child processes at a time; the output does not depend on it")
+        ->type_name("J");
+    app.add_option("--timeout", timeout, "CPU time per case x pair (default 60)")->type_name("SEC");
+    add_unsigned(app, "--memory", memory_mib, std::uint64_t{1} << 24, "memory per child")->type_name("MIB");
+  }
+  void apply(fuzz::Limits& limits, unsigned& jobs_out) const {
+    if (!timeout.empty()) limits.cpu_seconds = fuzz::parse_duration("--timeout", timeout);
+    limits.memory_bytes = memory_mib << 20;
+    if (limits.memory_bytes == 0) throw UsageError("--memory must be at least 1 (MiB)");
+    jobs_out = jobs;
+  }
+};
 
 int corpus_replay(int argc, char** argv) {
-  const Args a = parse_args(argc, argv, 3, {"--jobs", "--timeout", "--memory", "--algo", "--kernel"}, {"--help"});
-  if (a.has("--help")) {
-    std::cout << kCorpusHelp;
-    return 0;
-  }
   fuzz::ReplayOptions o;
-  o.inputs = a.positional;
-  if (o.inputs.empty()) throw UsageError("replay: give the corpus directory or case files");
-  if (auto v = a.get("--algo")) o.algorithms = fuzz::parse_list("--algo", *v);
-  if (auto v = a.get("--kernel")) o.kernels = fuzz::parse_list("--kernel", *v);
-  read_limits(a, o.limits, o.jobs);
-  return fuzz::replay_corpus(o, std::cout, std::cerr);
+  std::string algos, kernels;
+  CommandLine cl("corpus", kCorpusSynopsis, kCorpusDescription, kCorpusExamples, kCorpusEpilogue);
+  CLI::App& app = cl.app();
+  app.add_option("DIR|FILE", o.inputs, "corpus directories (every *.pts, in name order) or case files")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--algo", algos, "only these algorithms (comma-separated; default all 6)")->type_name("LIST");
+  app.add_option("--kernel", kernels, "only these kernels (comma-separated; default all 5)")->type_name("LIST");
+  const LimitOptions limits(app);
+  if (auto rc = cl.parse(argc, argv, 3)) return *rc;
+  try {
+    if (o.inputs.empty()) throw UsageError("give the corpus directory or case files");
+    if (!algos.empty()) o.algorithms = fuzz::parse_list("--algo", algos);
+    if (!kernels.empty()) o.kernels = fuzz::parse_list("--kernel", kernels);
+    limits.apply(o.limits, o.jobs);
+    return fuzz::replay_corpus(o, std::cout, std::cerr);
+  } catch (const io::InputError& e) {
+    return cl.usage_error(e.what());
+  } catch (const UsageError& e) {
+    return cl.usage_error(e.what());
+  } catch (const std::runtime_error& e) {  // a child that broke the line protocol
+    return cl.usage_error(e.what());
+  }
 }
 
 int corpus_add(int argc, char** argv) {
-  const Args a = parse_args(argc, argv, 3,
-                            {"--to", "--name", "--source", "--exercises", "--jobs", "--timeout", "--memory"},
-                            {"--replace", "--help"});
-  if (a.has("--help")) {
-    std::cout << kCorpusHelp;
-    return 0;
-  }
   fuzz::AddOptions o;
-  if (a.positional.size() != 1) throw UsageError("add: give one INPUT");
-  o.input = a.positional[0];
-  const auto to = a.get("--to");
-  if (!to) throw UsageError("add: missing --to DIR");
-  o.dir = *to;
-  o.name = a.get("--name");
-  o.source = a.get("--source");
-  o.exercises = a.get("--exercises");
-  o.replace = a.has("--replace");
-  read_limits(a, o.limits, o.jobs);
-  return fuzz::add_corpus_case(o, std::cout, std::cerr);
+  std::string name, source, exercises;
+  CommandLine cl("corpus", kCorpusSynopsis, kCorpusDescription, kCorpusExamples, kCorpusEpilogue);
+  CLI::App& app = cl.app();
+  app.add_option("INPUT", o.input, "the point file to record")->required();
+  app.add_option("--to", o.dir, "the corpus directory")->type_name("DIR")->required();
+  app.add_option("--name", name, "the case's name (default: the case's or INPUT's file name)");
+  app.add_option("--source", source, "where the points come from (default: INPUT's comments)")->type_name("TEXT");
+  app.add_option("--exercises", exercises, "what the case exercises (default: INPUT's comments)")
+      ->type_name("TEXT");
+  app.add_flag("--replace", o.replace, "overwrite an existing case, refilling its expect lines");
+  const LimitOptions limits(app);
+  if (auto rc = cl.parse(argc, argv, 3)) return *rc;
+  if (app.count("--name")) o.name = name;
+  if (app.count("--source")) o.source = source;
+  if (app.count("--exercises")) o.exercises = exercises;
+  try {
+    limits.apply(o.limits, o.jobs);
+    return fuzz::add_corpus_case(o, std::cout, std::cerr);
+  } catch (const io::InputError& e) {
+    return cl.usage_error(e.what());
+  } catch (const UsageError& e) {
+    return cl.usage_error(e.what());
+  } catch (const std::runtime_error& e) {  // a child that broke the line protocol
+    return cl.usage_error(e.what());
+  }
 }
 
 }  // namespace
 
 int cmd_corpus(int argc, char** argv) {
-  try {
-    const std::string sub = argc >= 3 ? argv[2] : "";
-    if (sub == "replay") return corpus_replay(argc, argv);
-    if (sub == "add") return corpus_add(argc, argv);
-    if (sub == "--help" || sub == "-h" || sub == "help") {
-      std::cout << kCorpusHelp;
-      return 0;
-    }
-    throw UsageError(sub.empty() ? "give a subcommand: replay or add (dlab corpus --help)"
-                                 : "unknown subcommand '" + sub + "' (replay or add; dlab corpus --help)");
-  } catch (const io::InputError& e) {
-    std::cerr << "dlab corpus: " << e.what() << "\n";
-    return 2;
-  } catch (const UsageError& e) {
-    std::cerr << "dlab corpus: " << e.what() << "\n";
-    return 2;
-  } catch (const std::runtime_error& e) {  // a child that broke the line protocol
-    std::cerr << "dlab corpus: " << e.what() << "\n";
-    return 2;
+  const std::string sub = argc >= 3 ? argv[2] : "";
+  if (sub == "replay") return corpus_replay(argc, argv);
+  if (sub == "add") return corpus_add(argc, argv);
+  if (sub == "--help" || sub == "-h" || sub == "help") {
+    CommandLine cl("corpus", kCorpusSynopsis, kCorpusDescription, kCorpusExamples, kCorpusEpilogue);
+    std::cout << cl.app().help();
+    return 0;
   }
+  std::cerr << "dlab corpus: "
+            << (sub.empty() ? "give a subcommand: replay or add (dlab corpus --help)"
+                            : "unknown subcommand '" + sub + "' (replay or add; dlab corpus --help)")
+            << "\n";
+  return 2;
 }
 
 }  // namespace dlab::cli
