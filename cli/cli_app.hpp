@@ -25,7 +25,7 @@ namespace dlab::cli {
 
 class CommandLine {
  public:
-  // command: the words after "dlab" ("fuzz merge"); synopsis: the "usage: ..."
+  // command: the word after "dlab" in messages ("fuzz"); synopsis: the "usage: ..."
   // lines; description: what the command does; examples: command lines, shown
   // after "Examples:"; epilogue: text after them (exit statuses, ...).
   CommandLine(std::string command, std::string synopsis, std::string description,

@@ -47,7 +47,7 @@ const char* const kFuzzEpilogue =
 int fuzz_merge(int argc, char** argv) {
   std::vector<std::string> dirs;
   std::string out;
-  CommandLine cl("fuzz merge", kFuzzSynopsis, kFuzzDescription, kFuzzExamples, kFuzzEpilogue);
+  CommandLine cl("fuzz", kFuzzSynopsis, kFuzzDescription, kFuzzExamples, kFuzzEpilogue);
   cl.app().add_option("DIR", dirs, "the n shard directories of one campaign")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cl.app().add_option("--out", out, "the merged campaign's directory")->required();

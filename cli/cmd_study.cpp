@@ -56,7 +56,7 @@ int cmd_study(int argc, char** argv) {
   std::string out, shard;
   bool use_default = false;
   std::uint64_t jobs = 1;
-  CommandLine cl(merge ? "study merge" : "study", kStudySynopsis, kStudyDescription, kStudyExamples,
+  CommandLine cl("study", kStudySynopsis, kStudyDescription, kStudyExamples,
                  kStudyEpilogue);
   CLI::App& app = cl.app();
   app.add_option(merge ? "DIR" : "CONFIG.json", positional,
