@@ -13,10 +13,11 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/args.hpp"
+#include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/point_reader.hpp"
 #include "cli/point_writer.hpp"
+#include "cli/run_choices.hpp"
 #include "fuzz/campaign_spec.hpp"
 #include "fuzz/case_plan.hpp"
 #include "fuzz/fuzz_outcome.hpp"
@@ -26,11 +27,13 @@
 namespace dlab::cli {
 namespace {
 
-const char* const kShrinkHelp =
+const char* const kShrinkSynopsis =
     "usage: dlab shrink INPUT --algo A --kernel K [--exact-sphere] [--enclosing-box]\n"
     "                   [--policy sos|strict] [--order input|random|brio|hilbert] [--seed S]\n"
     "                   [--outcome CLASS] [--kind KIND | --any-kind] [--dim 2|3] [-o OUT]\n"
-    "                   [--timeout SEC] [--memory MIB] [--max-tests N]\n"
+    "                   [--timeout SEC] [--memory MIB] [--max-tests N]\n";
+
+const char* const kShrinkDescription =
     "Shrinks a point set on which the pair fails to a smaller one on which it fails the same\n"
     "way: ddmin over the points (Zeller and Hildebrandt, IEEE TSE 2002) down to a 1-minimal set,\n"
     "then coordinate passes -- translate toward the origin by exact offsets, snap coordinates to\n"
@@ -46,19 +49,21 @@ const char* const kShrinkHelp =
     "not-delaunay, invalid, reported, differs, crash, timeout, out-of-memory) and its kind -- the\n"
     "invalid check group, the reported message with numbers as '#', the crash's signal (--kind\n"
     "KIND: check it; --any-kind: any kind of that class will do).\n"
-    "  --dim 2|3       check INPUT's dimension\n"
-    "  --max-tests N   runs of the pair at most, those of INPUT and of the result included (20000)\n"
-    "  -o OUT          the shrunk points, hexadecimal floats after '#' comment lines (what was\n"
-    "                  shrunk, the pair, the failure, the sizes, the dlab triangulate command\n"
-    "                  that replays it, and INPUT's own comments); stdout by default\n"
     "Prints the sizes before and after (points, significant bits of all coordinates) and the\n"
-    "number of tests on stderr.\n"
-    "Example:\n"
+    "number of tests on stderr. -o OUT: the shrunk points, hexadecimal floats after '#' comment\n"
+    "lines (what was shrunk, the pair, the failure, the sizes, the dlab triangulate command that\n"
+    "replays it, and INPUT's own comments).\n";
+
+const char* const kShrinkExamples =
     "  dlab fuzz --algo lawson --kernel float --gen near-degenerate --cases 200 --out c1\n"
     "  dlab shrink c1/failures/lawson.float.2d.not-delaunay.txt --algo lawson --kernel float \\\n"
     "      -o small.txt\n"
     "  dlab triangulate small.txt --algo lawson --kernel float --seed SEED --validate\n"
     "      (SEED: the failure file's; small.txt's '# replay:' line is this command)\n"
+    "  dlab shrink bad.txt --algo bowyer-watson --kernel float --order input --max-tests 500 \\\n"
+    "      --any-kind -o small.txt\n";
+
+const char* const kShrinkEpilogue =
     "Exit status: 0 shrunk; 1 the shrunk set did not fail the same way when run again (a flaky\n"
     "failure, e.g. a timeout near its limit); 2 bad usage or INPUT (FILE:LINE: problem), or an\n"
     "INPUT on which the pair does not fail (or not as --outcome / --kind say): nothing to shrink.\n";
@@ -74,45 +79,66 @@ struct Options {
   std::optional<int> dim;
 };
 
-Options parse(int argc, char** argv) {
-  const Args a = parse_args(argc, argv, 2,
-                            {"--algo", "--kernel", "--policy", "--order", "--seed", "--outcome", "--kind", "--dim",
-                             "-o", "--timeout", "--memory", "--max-tests"},
-                            {"--exact-sphere", "--enclosing-box", "--any-kind"});
-  if (a.positional.size() != 1)
-    throw UsageError(a.positional.empty() ? "missing INPUT" : "unexpected argument '" + a.positional[1] + "'");
+// The command line -> Options; nullopt after --help or a usage error (*rc set).
+std::optional<Options> parse(int argc, char** argv, int& rc) {
   Options o;
-  o.input = a.positional[0];
-  o.output = a.get("-o").value_or("-");
-  const auto algo = a.get("--algo"), kernel = a.get("--kernel");
-  if (!algo || !kernel) throw UsageError("give the pair that fails: --algo A --kernel K");
-  std::string name = *algo;
-  if (a.has("--exact-sphere")) name += "+exact-sphere";
-  if (a.has("--enclosing-box")) name += "+enclosing-box";
-  o.pair = fuzz::make_pair(name, *kernel);
-  o.pair.policy = a.get("--policy").value_or("");
-  o.pair.order = a.get("--order").value_or("brio");
-  if (!o.pair.policy.empty() && o.pair.policy != "sos" && o.pair.policy != "strict")
-    throw UsageError("--policy must be sos or strict, not '" + o.pair.policy + "'");
-  const std::string& ord = o.pair.order;
-  if (ord != "input" && ord != "random" && ord != "brio" && ord != "hilbert")
-    throw UsageError("--order must be input, random, brio or hilbert, not '" + ord + "'");
-  if (a.get("--seed")) o.order_seed = a.u64("--seed", 0);
-  o.outcome = a.get("--outcome");
-  if (o.outcome && (!fuzz::is_failure(*o.outcome) || std::find(std::begin(fuzz::kOutcomeOrder),
-                                                               std::end(fuzz::kOutcomeOrder),
-                                                               *o.outcome) == std::end(fuzz::kOutcomeOrder)))
-    throw UsageError("--outcome must be a failure class: not-delaunay, invalid, reported, differs, crash, "
-                     "timeout or out-of-memory, not '" + *o.outcome + "'");
-  o.kind = a.get("--kind");
-  o.any_kind = a.has("--any-kind");
-  if (o.kind && o.any_kind) throw UsageError("--kind and --any-kind exclude each other");
-  if (a.get("--dim")) o.dim = static_cast<int>(a.i64("--dim", 2, 2, 3));
-  if (a.get("--timeout")) o.limits.cpu_seconds = fuzz::parse_duration("--timeout", *a.get("--timeout"));
-  o.limits.memory_bytes = a.u64("--memory", 4096, std::uint64_t{1} << 24) << 20;
-  if (o.limits.memory_bytes == 0) throw UsageError("--memory must be at least 1 (MiB)");
-  o.max_tests = a.u64("--max-tests", 20000);
-  if (o.max_tests < 2) throw UsageError("--max-tests must be at least 2 (the run of INPUT and the final one)");
+  std::string algo, kernel, outcome, kind, timeout, policy, order = "brio";
+  std::uint64_t seed = 0, memory_mib = 4096;
+  int dim = 2;
+  bool exact_sphere = false, enclosing_box = false;
+  CommandLine cl("shrink", kShrinkSynopsis, kShrinkDescription, kShrinkExamples, kShrinkEpilogue);
+  CLI::App& app = cl.app();
+  app.add_option("INPUT", o.input, "a point file on which the pair fails ('-': standard input)")->required();
+  app.add_option("--algo", algo, "the pair's algorithm, as dlab triangulate --algo")->type_name("A");
+  app.add_option("--kernel", kernel, "the pair's kernel, as dlab triangulate --kernel")->type_name("K");
+  app.add_flag("--exact-sphere", exact_sphere, "george: the exact circumsphere test");
+  app.add_flag("--enclosing-box", enclosing_box, "george: the enclosing box");
+  add_choice(app, "--policy", policy, kPolicies, "as dlab triangulate --policy");
+  add_choice(app, "--order", order, kOrders, "as dlab triangulate --order");
+  add_unsigned(app, "--seed", seed, UINT64_MAX, "as dlab triangulate --seed (default: INPUT's replay line, else 0)")
+      ->type_name("S")->default_str("");
+  app.add_option("--outcome", outcome,
+                 "check that INPUT fails this way: not-delaunay, invalid, reported, differs, crash,\n"
+                 "timeout or out-of-memory")
+      ->type_name("CLASS");
+  app.add_option("--kind", kind, "check INPUT's kind of failure (the check group, message or signal)");
+  app.add_flag("--any-kind", o.any_kind, "any kind of INPUT's outcome class will do")->excludes("--kind");
+  add_integer(app, "--dim", dim, 2, 3, "check INPUT's dimension")->type_name("2|3")->default_str("");
+  app.add_option("-o", o.output, "the shrunk points (-: standard output)")->type_name("OUT")->capture_default_str();
+  app.add_option("--timeout", timeout, "CPU time per test (default 10)")->type_name("SEC");
+  add_unsigned(app, "--memory", memory_mib, std::uint64_t{1} << 24, "memory per test")->type_name("MIB");
+  add_unsigned(app, "--max-tests", o.max_tests, UINT64_MAX,
+               "runs of the pair at most, those of INPUT and of the result included");
+  if (auto r = cl.parse(argc, argv, 2)) {
+    rc = *r;
+    return std::nullopt;
+  }
+  try {
+    if (algo.empty() || kernel.empty()) throw UsageError("give the pair that fails: --algo A --kernel K");
+    std::string name = algo;
+    if (exact_sphere) name += "+exact-sphere";
+    if (enclosing_box) name += "+enclosing-box";
+    o.pair = fuzz::make_pair(name, kernel);
+    o.pair.policy = policy;  // empty: dlab triangulate's default for the kernel
+    o.pair.order = order;
+    if (app.count("--seed")) o.order_seed = seed;
+    if (app.count("--outcome")) {
+      o.outcome = outcome;
+      if (!fuzz::is_failure(outcome) || std::find(std::begin(fuzz::kOutcomeOrder), std::end(fuzz::kOutcomeOrder),
+                                                  outcome) == std::end(fuzz::kOutcomeOrder))
+        throw UsageError("--outcome must be a failure class: not-delaunay, invalid, reported, differs, crash, "
+                         "timeout or out-of-memory, not '" + outcome + "'");
+    }
+    if (app.count("--kind")) o.kind = kind;
+    if (app.count("--dim")) o.dim = dim;
+    if (!timeout.empty()) o.limits.cpu_seconds = fuzz::parse_duration("--timeout", timeout);
+    o.limits.memory_bytes = memory_mib << 20;
+    if (o.limits.memory_bytes == 0) throw UsageError("--memory must be at least 1 (MiB)");
+    if (o.max_tests < 2) throw UsageError("--max-tests must be at least 2 (the run of INPUT and the final one)");
+  } catch (const UsageError& e) {
+    rc = cl.usage_error(e.what());
+    return std::nullopt;
+  }
   return o;
 }
 
@@ -240,13 +266,11 @@ int run_shrink(const Options& o) {
 }  // namespace
 
 int cmd_shrink(int argc, char** argv) {
-  for (int i = 2; i < argc; ++i)
-    if (std::string_view(argv[i]) == "--help") {
-      std::cout << kShrinkHelp;
-      return 0;
-    }
+  int rc = 0;
+  const std::optional<Options> o = parse(argc, argv, rc);
+  if (!o) return rc;
   try {
-    return run_shrink(parse(argc, argv));
+    return run_shrink(*o);
   } catch (const UsageError& e) {
     std::cerr << "dlab shrink: " << e.what() << "\n";
     return 2;

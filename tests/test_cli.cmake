@@ -623,7 +623,7 @@ dlab_case(shrink_stdout RC 0 OUT "^# dlab shrink: .*\n# replay: dlab triangulate
 dlab_case(shrink_budget RC 0 ERR "; 10 tests; test budget spent\n$" ARGS shrink lawson_float.txt ${lawson_pair} --max-tests 10 -o shrunk3.txt)
 dlab_case(shrink_budget_replay RC 1 ERR "^dlab triangulate: not-delaunay: " ARGS triangulate shrunk3.txt ${lawson_pair} --validate)
 # Bad input and usage: exit 2, a clear message.
-dlab_case(shrink_help RC 0 OUT "^usage: dlab shrink INPUT --algo A --kernel K.*Zeller and Hildebrandt.*Example:" ARGS shrink --help)
+dlab_case(shrink_help RC 0 OUT "^usage: dlab shrink INPUT --algo A --kernel K.*Zeller and Hildebrandt.*Examples:" ARGS shrink --help)
 dlab_case(shrink_in_usage RC 0 OUT "dlab shrink INPUT --algo A --kernel K" ARGS --help)
 dlab_case(shrink_missing RC 2 ERR "^dlab shrink: no_such.txt: cannot read" ARGS shrink no_such.txt ${lawson_pair})
 dlab_case(shrink_nan RC 2 ERR "^dlab shrink: nan.txt:2: NaN coordinate 'nan'" ARGS shrink nan.txt ${lawson_pair})
