@@ -49,8 +49,10 @@ std::string message_of(const CLI::ParseError& e) {
   std::smatch m;
   static const std::regex needs_value(R"(^(\S+): 1 required \S+ missing$)");
   static const std::regex required(R"(^(\S+) is required$)");
+  static const std::regex excludes(R"(^(\S+) excludes (\S+)$)");
   if (std::regex_match(what, m, needs_value)) return "option " + m[1].str() + " needs a value";
   if (std::regex_match(what, m, required)) return "missing " + m[1].str();
+  if (std::regex_match(what, m, excludes)) return m[1].str() + " and " + m[2].str() + " exclude each other";
   return what;
 }
 
