@@ -23,6 +23,7 @@
 #include "cli/kernels.hpp"
 #include "cli/numbers.hpp"
 #include "cli/outcome_report.hpp"
+#include "cli/run_choices.hpp"
 #include "cli/stats_json.hpp"
 #include "fuzz/generators.hpp"
 #include "variants/outcome.hpp"
@@ -111,14 +112,13 @@ py::tuple triangulate(const py::handle& points, const std::string& algo, const s
   opt.order = order;
   opt.location = location;
   opt.seed = seed;
-  // The command line's checks of the names before run() (cli/cmd_triangulate.cpp; the
+  // The command line's check of the names before run() (cli/run_choices.hpp; the
   // tests compare the messages with the command's).
-  if (opt.policy != "sos" && opt.policy != "strict")
-    throw py::value_error("--policy must be sos or strict, not '" + opt.policy + "'");
-  if (opt.order != "input" && opt.order != "random" && opt.order != "brio" && opt.order != "hilbert")
-    throw py::value_error("--order must be input, random, brio or hilbert, not '" + opt.order + "'");
-  if (opt.location != "walk" && opt.location != "scan")
-    throw py::value_error("--location must be walk or scan, not '" + opt.location + "'");
+  try {
+    dlab::cli::check_run_choices(opt);
+  } catch (const dlab::UsageError& e) {
+    throw py::value_error(e.what());
+  }
   dlab::RunResult res;
   std::string usage_error;
   std::uint64_t peak_rss = 0;
