@@ -3,87 +3,91 @@
 
 #include <sys/resource.h>
 
+#include <iterator>
+
+#include <nlohmann/json.hpp>
+
 #include "cli/numbers.hpp"
 
 namespace dlab::io {
 namespace {
 
-void write_counters(std::ostream& out, const Counters& c, const char* indent) {
-  if (c.empty()) {
-    out << "{}";
-    return;
-  }
-  out << "{\n";
-  for (std::size_t i = 0; i < c.size(); ++i)
-    out << indent << "  " << json_string(c[i].first) << ": " << c[i].second
-        << (i + 1 < c.size() ? ",\n" : "\n");
-  out << indent << "}";
-}
+using Json = nlohmann::ordered_json;  // keeps the keys in insertion order
 
-// JSON has no NaN/infinity: such a value is written as null.
-std::string json_number(double x) {
+// Strings with invalid UTF-8 (a message may quote a file's bytes) get U+FFFD
+// instead of nlohmann's exception: the file stays valid JSON.
+std::string dump(const Json& v) { return v.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+// nlohmann writes a double with Grisu2, whose digits are not always the
+// nearest shortest ones (1.1240817954901996e-308 comes out ...995) and with
+// "0.0" for 0; design.md's --stats numbers are std::to_chars's shortest
+// round-trip text (numbers.hpp), and JSON has no NaN/infinity: null.
+std::string number(double x) {
   if (!(x == x) || x - x != 0) return "null";
   return format_decimal(x);
 }
 
+// Two-space indentation, one key per line, "{}" for an empty object: what
+// nlohmann's dump(2) writes, but doubles through number().
+void write(std::ostream& out, const Json& v, int indent) {
+  if (v.is_number_float()) {
+    out << number(v.get<double>());
+    return;
+  }
+  if (!v.is_object() || v.empty()) {
+    out << dump(v);
+    return;
+  }
+  const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
+  out << "{\n";
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    out << pad << dump(it.key()) << ": ";
+    write(out, it.value(), indent + 2);
+    out << (std::next(it) != v.end() ? ",\n" : "\n");
+  }
+  out << pad.substr(2) << "}";
+}
+
+Json counters(const Counters& c) {
+  Json o = Json::object();
+  for (const auto& [key, n] : c) o[key] = n;
+  return o;
+}
+
 }  // namespace
 
-std::string json_string(std::string_view s) {
-  std::string o = "\"";
-  for (char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      case '\t': o += "\\t"; break;
-      case '\r': o += "\\r"; break;
-      default:
-        if (c < 0x20 || c == 0x7f) {
-          static const char* h = "0123456789abcdef";
-          o += "\\u00";
-          o += h[c >> 4];
-          o += h[c & 15];
-        } else {
-          o += ch;  // UTF-8 passes through
-        }
-    }
-  }
-  return o + "\"";
-}
+std::string json_string(std::string_view s) { return dump(Json(std::string(s))); }
 
 void write_stats_json(std::ostream& out, const StatsRecord& r) {
   const RunResult& res = *r.result;
   const std::size_t k = static_cast<std::size_t>(res.dimension) + 1;
-  out << "{\n";
-  out << "  \"algorithm\": " << json_string(r.options.algorithm) << ",\n";
-  out << "  \"kernel\": " << json_string(r.options.kernel) << ",\n";
-  out << "  \"policy\": " << json_string(r.options.policy) << ",\n";
-  out << "  \"order\": " << json_string(r.options.order) << ",\n";
-  out << "  \"location\": " << json_string(r.options.location) << ",\n";
-  out << "  \"seed\": " << r.options.seed << ",\n";
-  out << "  \"dimension\": " << res.dimension << ",\n";
-  out << "  \"input_points\": " << r.input_points << ",\n";
-  out << "  \"distinct_points\": " << res.distinct_points << ",\n";
-  out << "  \"inserted_points\": " << res.inserted_points << ",\n";
-  out << "  \"simplices\": " << res.simplices.size() / k << ",\n";
-  out << "  \"seconds\": " << json_number(res.seconds) << ",\n";
-  out << "  \"peak_rss_bytes\": " << r.peak_rss_bytes << ",\n";
-  out << "  \"predicates\": ";
-  write_counters(out, res.predicates, "  ");
-  out << ",\n  \"counters\": ";
-  write_counters(out, res.counters, "  ");
-  out << ",\n  \"snapping\": ";
-  if (res.snapping.empty()) {
-    out << "{}";
-  } else {
-    out << "{\n";
-    for (const auto& [key, v] : res.snapping) out << "    " << json_string(key) << ": " << v << ",\n";
-    out << "    \"max_displacement\": " << json_number(res.max_snap_displacement) << "\n  }";
+  Json j;
+  j["algorithm"] = r.options.algorithm;
+  j["kernel"] = r.options.kernel;
+  j["policy"] = r.options.policy;
+  j["order"] = r.options.order;
+  j["location"] = r.options.location;
+  j["seed"] = r.options.seed;
+  j["dimension"] = res.dimension;
+  j["input_points"] = r.input_points;
+  j["distinct_points"] = res.distinct_points;
+  j["inserted_points"] = res.inserted_points;
+  j["simplices"] = res.simplices.size() / k;
+  j["seconds"] = res.seconds;
+  j["peak_rss_bytes"] = r.peak_rss_bytes;
+  j["predicates"] = counters(res.predicates);
+  j["counters"] = counters(res.counters);
+  Json snapping = Json::object();
+  if (!res.snapping.empty()) {
+    for (const auto& [key, v] : res.snapping) snapping[key] = v;
+    snapping["max_displacement"] = res.max_snap_displacement;
   }
-  out << ",\n  \"outcome\": " << json_string(r.outcome) << ",\n";
-  out << "  \"validated\": " << (r.validated ? "true" : "false") << ",\n";
-  out << "  \"message\": " << json_string(r.message) << "\n}\n";
+  j["snapping"] = snapping;
+  j["outcome"] = r.outcome;
+  j["validated"] = r.validated;
+  j["message"] = r.message;
+  write(out, j, 0);
+  out << "\n";
 }
 
 std::uint64_t peak_rss_bytes() {

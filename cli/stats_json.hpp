@@ -31,7 +31,7 @@ struct StatsRecord {
 
 void write_stats_json(std::ostream& out, const StatsRecord& r);
 
-// JSON string literal with escapes (control bytes as \u00XX).
+// JSON string literal (nlohmann's escapes; invalid UTF-8 replaced by U+FFFD).
 std::string json_string(std::string_view s);
 
 // Peak resident set size of this process (getrusage ru_maxrss, KiB -> bytes).

@@ -515,3 +515,22 @@ TEST_CASE("--stats JSON has the contract's keys in order and escapes strings", "
   CHECK(j.substr(j.size() - 2) == "}\n");
   CHECK(peak_rss_bytes() > 0);
 }
+
+TEST_CASE("--stats JSON: doubles as std::to_chars writes them, NaN as null, invalid UTF-8 replaced", "[io]") {
+  RunResult res;
+  res.dimension = 2;
+  res.seconds = std::numeric_limits<double>::quiet_NaN();
+  res.snapping = {{"points_moved", 1}};
+  // nlohmann's Grisu2 writes this double's last digit as 5; the shortest
+  // nearest text, std::to_chars's, ends in 6 (both read back to it).
+  res.max_snap_displacement = 1.1240817954901996e-308;
+  StatsRecord rec;
+  rec.result = &res;
+  rec.message = "byte \xff end";
+  std::ostringstream out;
+  write_stats_json(out, rec);
+  const std::string j = out.str();
+  CHECK_THAT(j, Catch::Contains("\"seconds\": null,\n"));
+  CHECK_THAT(j, Catch::Contains("\"snapping\": {\n    \"points_moved\": 1,\n    \"max_displacement\": 1.1240817954901996e-308\n  },\n"));
+  CHECK_THAT(j, Catch::Contains("\"message\": \"byte \xef\xbf\xbd end\"\n}\n"));
+}
