@@ -82,15 +82,22 @@ std::optional<int> CommandLine::parse(int argc, char** argv, int first) {
     std::cout << app_.help() << std::flush;
     return 0;
   } catch (const CLI::ParseError& e) {
-    return usage_error(message_of(e));
+    // An unknown option first: it may be why a value or an argument is missing.
+    return usage_error(extras_error().value_or(message_of(e)));
   }
-  for (const std::string& extra : app_.remaining()) {
-    if (extra == "--") continue;
-    if (extra.size() > 1 && extra[0] == '-')
-      return usage_error("unknown option '" + extra.substr(0, extra.find('=')) + "'");
-    return usage_error("unexpected argument '" + extra + "'");
-  }
+  if (auto e = extras_error()) return usage_error(*e);
   return std::nullopt;
+}
+
+std::optional<std::string> CommandLine::extras_error() const {
+  const std::vector<std::string> extras = app_.remaining();
+  std::optional<std::string> unexpected;
+  for (const std::string& extra : extras) {
+    if (extra == "--") continue;
+    if (extra.size() > 1 && extra[0] == '-') return "unknown option '" + extra.substr(0, extra.find('=')) + "'";
+    if (!unexpected) unexpected = "unexpected argument '" + extra + "'";
+  }
+  return unexpected;
 }
 
 std::uint64_t parse_unsigned(const std::string& name, const std::string& text, std::uint64_t max) {

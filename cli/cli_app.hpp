@@ -42,6 +42,10 @@ class CommandLine {
   int usage_error(const std::string& message) const;
 
  private:
+  // What CLI11 left over (allow_extras): "unknown option '--x'" (before any
+  // unexpected positional), "unexpected argument 'y'", or nothing.
+  std::optional<std::string> extras_error() const;
+
   std::string command_;
   CLI::App app_;
 };

@@ -644,6 +644,44 @@ dlab_case(shrink_max_tests RC 2 ERR "--max-tests must be at least 2" ARGS shrink
 dlab_case(shrink_policy RC 2 ERR "--policy must be sos or strict, not 'fuzzy'" ARGS shrink lawson_float.txt ${lawson_pair} --policy fuzzy)
 dlab_case(shrink_unwritable RC 2 ERR "cannot write '${WORK}/no/such/dir/x.txt'" ARGS shrink lawson_float.txt ${lawson_pair} -o "${WORK}/no/such/dir/x.txt")
 
+# ---- every subcommand's command line (cli/cli_app.hpp, CLI11) -----------------
+# --help: exit 0, on stdout the synopsis, the options with their descriptions
+# and at least two example command lines; an unknown option: exit 2 and one
+# stderr line naming it (before any missing argument). Words joined by ':'.
+foreach(cmd triangulate check convert predicate gen flip draw demo plot fuzz fuzz:merge shrink
+            corpus corpus:replay corpus:add study study:merge --version version)
+  string(REPLACE ":" ";" words "${cmd}")
+  list(GET words 0 prefix)
+  if(prefix STREQUAL "version")
+    set(prefix "--version")
+  endif()
+  dlab_case(help_${cmd} RC 0 OUT "^usage: dlab ${prefix}.*\nOptions:\n  -h,--help .*\nExamples:\n  dlab [^\n]+\n  dlab "
+            ARGS ${words} --help)
+  if(NOT cmd STREQUAL "corpus")
+    dlab_case(unknown_option_${cmd} RC 2 ERR "^dlab ${prefix}: unknown option '--frobnicate'\n$" ARGS ${words} --frobnicate)
+  endif()
+endforeach()
+# A bad number names its option (numbers.hpp's reason for a real); ':' joins words.
+foreach(case triangulate:--seed gen:--n gen:--dim gen:--lo gen:--spacing flip:--flips fuzz:--cases fuzz:--jobs
+             shrink:--max-tests corpus:replay:--jobs corpus:add:--memory study:--jobs)
+  string(REPLACE ":" ";" words "${case}")
+  list(POP_BACK words option)
+  list(GET words 0 prefix)
+  dlab_case(bad_number_${case} RC 2 ERR "^dlab ${prefix}: ${option}: [^\n]*'x1'[^\n]*\n$" ARGS ${words} ${option} x1)
+endforeach()
+dlab_case(number_underflow_option RC 2 ERR "^dlab gen: --lo: coordinate '1e-400' is not zero but rounds to zero" ARGS gen uniform --lo 1e-400)
+dlab_case(number_overflow_option RC 2 ERR "^dlab gen: --hi: coordinate '1e400' overflows to infinity" ARGS gen uniform --hi 1e400)
+dlab_case(number_range_option RC 2 ERR "^dlab fuzz: --jobs: '0' is not an integer in 1..256\n$" ARGS fuzz --jobs 0 --cases 1 --out x)
+dlab_case(number_negative_value RC 0 OUT "^-0x1.[0-9a-f]+p[+]0 -0x1.[0-9a-f]+p[+]0\n$" ARGS gen uniform --n 1 --lo -2 --hi=-1)
+dlab_case(number_hex_value RC 0 OUT "^0x1p[+]0 0x1p[+]0\n$" ARGS gen uniform --n 1 --lo 0x1p0 --hi 0x1p0)
+dlab_case(option_twice_last RC 0 OUT "^0x1p[+]1 0x1p[+]1\n$" ARGS gen uniform --n 1 --lo 1 --hi 1 --lo 2 --hi 2)
+dlab_case(missing_value_long RC 2 ERR "^dlab gen: option --seed needs a value\n$" ARGS gen uniform --seed)
+dlab_case(stdin_positional RC 0 OUT "valid Delaunay" IN "${WORK}/square.txt" ARGS check - square.tri)
+# Negative numbers are positional where no option has their name: "-.5", "-inf".
+dlab_case(predicate_negative_coordinates RC 0 OUT "^-1\n$" ARGS predicate orient2d mp -.5 0 0.5 0 0 -0x1p-1)
+dlab_case(predicate_negative_infinity RC 2 ERR "^dlab predicate: argument 1: infinite coordinate '-inf'\n$" ARGS predicate orient2d mp -inf 0 1 0 0 1)
+dlab_case(after_double_dash RC 2 ERR "^dlab check: --x: cannot read" ARGS check -- --x square.tri)
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} CLI case(s) failed")
 endif()
