@@ -48,7 +48,8 @@ const char* const kUsage =
     "i.e. Shewchuk's orient2d(v0,v1,v2) > 0 in 2D (counterclockwise) and orient3d(v0,v1,v2,v3) < 0\n"
     "in 3D (CGAL's cells); --orientation any also takes the opposite (scipy's are mixed).\n"
     "--decimal: coordinates as shortest round-trip decimals (numpy.loadtxt) instead of hex floats.\n"
-    "Exit status: 0 success, 1 any other outcome, 2 bad input or usage (dlab COMMAND --help).\n";
+    "Exit status: 0 success, 1 any other outcome, 2 bad input or usage.\n"
+    "dlab COMMAND --help: the command's synopsis, every option, examples.\n";
 
 }  // namespace
 
