@@ -55,13 +55,13 @@ class Output {
 int cmd_triangulate(int argc, char** argv) {
   RunOptions opt;
   opt.policy.clear();  // sos for exact kernels, strict for the inexact baselines
-  std::string input, simplex_path = "-", points_path, stats_path;
+  std::string input, input_format, simplex_path = "-", points_path, stats_path;
   bool validate = false, decimal = false;
   CommandLine cl(
       "triangulate",
       "usage: dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
       "         [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]\n"
-      "         [--points-out FILE [--decimal]] [--stats FILE.json] [--validate]\n"
+      "         [--points-out FILE [--decimal]] [--stats FILE.json] [--validate] [--input-format FMT]\n"
       "         [--exact-sphere] [--enclosing-box]\n",
       "Triangulates INPUT with one algorithm x kernel pair and classifies the result: the exact\n"
       "validator judges every result the pair does not promise to be Delaunay (inexact kernels,\n"
@@ -76,6 +76,10 @@ int cmd_triangulate(int argc, char** argv) {
       kOutcomeHelp);
   CLI::App& app = cl.app();
   app.add_option("INPUT", input, "the points")->required();
+  app.add_option("--input-format", input_format,
+                 "text, node, xyz, off or ply, whatever INPUT's extension (default: by the extension;\n"
+                 "standard input: text)")
+      ->type_name("FMT");
   app.add_option("-o", simplex_path,
                  "the simplices, d+1 zero-based indices per line, positively oriented (-: standard output)")
       ->type_name("SIMPLICES")->default_str("-");
@@ -109,7 +113,7 @@ int cmd_triangulate(int argc, char** argv) {
   PointSet points;
   std::unique_ptr<Output> simplex_out, points_out, stats_out;
   try {
-    points = io::read_points(input);
+    points = io::read_points(input, input_format);
     simplex_out = std::make_unique<Output>(simplex_path);
     if (!points_path.empty()) points_out = std::make_unique<Output>(points_path);
     if (!stats_path.empty()) stats_out = std::make_unique<Output>(stats_path);

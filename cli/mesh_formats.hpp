@@ -35,8 +35,16 @@ enum class MeshFormat { tetgen_node, vtu, off };
 // `false` when none matches.
 bool mesh_format_of(std::string_view path, MeshFormat& format);
 
+// The formats by name, as --format takes them (in MeshFormat's order).
+inline constexpr const char* kMeshFormatNames[] = {"node", "vtu", "off"};
+// The format named `name` (--format) when it is not empty, else the one of
+// the path's extension; InputError naming the choices when neither names one.
+MeshFormat choose_mesh_format(std::string_view path, std::string_view name);
+
 // Writes `points` (and the simplices, d+1 zero-based indices each, when given)
-// to `path` in `format`; the .node writer also writes the sibling files.
+// to `path` in `format`; "-" is standard output (vtu and off: one file). The
+// node writer writes BASE.node and its sibling files, BASE being the path
+// without its .node extension (or the whole path when it has another one).
 // Returns the paths written. Throws InputError "PATH: cannot write" or, for
 // OFF with 3D simplices, "PATH: OFF holds triangles only ...".
 std::vector<std::string> write_mesh(const std::string& path, MeshFormat format,
@@ -70,8 +78,8 @@ std::vector<std::int64_t> simplex_neighbours(const std::vector<std::uint32_t>& s
 
 // Vertex lists: true if the path ends in .xyz, .off or .ply (any case).
 bool is_vertex_list_file(std::string_view path);
-// Reads one; InputError "FILE:LINE: problem" on bad input.
-PointSet read_vertex_list(const std::string& path);
+// Parses one (ext: ".xyz", ".off" or ".ply"; read_points() in point_reader.hpp
+// reads files); InputError "FILE:LINE: problem" on bad input.
 PointSet parse_vertex_list(std::string_view text, const std::string& name, std::string_view ext);
 
 }  // namespace dlab::io

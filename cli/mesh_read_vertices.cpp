@@ -205,10 +205,4 @@ PointSet parse_vertex_list(std::string_view text, const std::string& name, std::
   return parse_ply(lines);
 }
 
-PointSet read_vertex_list(const std::string& path) {
-  std::string ext = path.substr(path.size() - 4);
-  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return parse_vertex_list(read_file(path), path, ext);
-}
-
 }  // namespace dlab::io

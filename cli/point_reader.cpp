@@ -2,6 +2,7 @@
 // documentation (node files); TetGen's is the same with dimension 3.
 #include "cli/point_reader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -281,14 +282,32 @@ PointSet read_points(std::istream& in, const std::string& name, bool node_format
   return ps;
 }
 
-PointSet read_points(const std::string& path) {
-  if (path == "-") return read_points(std::cin, display_name(path), false);
-  if (is_vertex_list_file(path)) return read_vertex_list(path);  // .xyz .off .ply
+PointSet read_points(const std::string& path) { return read_points(path, ""); }
+
+std::string input_format_of(std::string_view path) {
+  if (is_node_file(path)) return "node";
+  if (is_vertex_list_file(path)) {  // .xyz .off .ply, any case
+    std::string ext(path.substr(path.size() - 3));
+    for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    return ext;
+  }
+  return "text";
+}
+
+PointSet read_points(const std::string& path, std::string_view format) {
+  const std::string f = format.empty() ? input_format_of(path) : std::string(format);
+  if (std::find(std::begin(kInputFormats), std::end(kInputFormats), f) == std::end(kInputFormats)) {
+    std::string choices;
+    for (const char* c : kInputFormats) choices += std::string(choices.empty() ? "" : ", ") + c;
+    throw InputError("unknown input format '" + f + "' (choices: " + choices + ")");
+  }
+  if (f == "xyz" || f == "off" || f == "ply") return parse_vertex_list(read_file(path), display_name(path), "." + f);
+  if (path == "-") return read_points(std::cin, display_name(path), f == "node");
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read: is a directory");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
-  return read_points(file, path, is_node_file(path));
+  return read_points(file, path, f == "node");
 }
 
 }  // namespace dlab::io

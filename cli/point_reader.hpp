@@ -34,6 +34,16 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 // "-" reads standard input (always the plain text format).
 PointSet read_points(const std::string& path);
 
+// The INPUT formats by name, as --input-format takes them: text, node, and the
+// vertex lists xyz, off, ply (mesh_formats.hpp).
+inline constexpr const char* kInputFormats[] = {"text", "node", "xyz", "off", "ply"};
+// The format of a path by its extension: node, xyz, off, ply, else text.
+std::string input_format_of(std::string_view path);
+// Reads `path` ("-": standard input) in `format` (one of kInputFormats), or by
+// its extension when `format` is empty; an unknown name is an InputError
+// naming the choices.
+PointSet read_points(const std::string& path, std::string_view format);
+
 // Reads a stream in chunks (never whole); `name` is used in messages only.
 PointSet read_points(std::istream& in, const std::string& name, bool node_format);
 
