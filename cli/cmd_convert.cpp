@@ -1,6 +1,7 @@
-// `dlab convert POINTS OUT [--simplices SIMPLICES]`: a point set, and
-// optionally a triangulation of it, into another tool's mesh format chosen by
-// OUT's extension (mesh_formats.hpp). Exit 0 on success, 2 on bad input or usage.
+// `dlab convert POINTS OUT [--simplices SIMPLICES] [--format FMT] [--input-format FMT]`:
+// a point set, and optionally a triangulation of it, into another tool's mesh
+// format chosen by OUT's extension or --format (mesh_formats.hpp). Exit 0 on
+// success, 2 on bad input or usage.
 #include <iostream>
 
 #include "cli/cli_app.hpp"

@@ -6,7 +6,9 @@ the same points (bit for bit, from the hexadecimal floats of `dlab gen`) and
 cells; the orientation of tetrahedra and hull facets is checked with exact
 rational arithmetic (fractions); TetGen accepts our .node and, for points in
 general position, builds the same Delaunay tetrahedra. Bad input exits 2 with
-FILE:LINE in the message. Exit 77 (skip) without numpy/meshio.
+FILE:LINE in the message. --format / --input-format write and read any file
+name and standard input/output: the same bytes as by extension, and what meshio
+reads. Exit 77 (skip) without numpy/meshio.
 
 usage: test_formats.py DLAB WORKDIR
 """
@@ -225,6 +227,54 @@ r = dlab("convert", "p2.txt", "x.vtu", "--simplices", "bad_tri.txt", expect=2)
 check("bad_tri.txt:2:" in r.stderr, f"out-of-range simplex: {r.stderr.strip()}")
 r = dlab("convert", "--help")
 check("Examples" in r.stdout and ".vtu" in r.stdout, "dlab convert --help")
+
+# --- --format / --input-format: any name, standard input and output; what is written or read
+# is checked against meshio and against the files written by extension above.
+def dlab_bytes(*args, stdin=b""):
+    r = subprocess.run([DLAB, *args], cwd=WORK, input=stdin, capture_output=True, timeout=120)
+    check(r.returncode == 0, f"dlab {' '.join(args)}: exit {r.returncode}\n{r.stderr.decode()}")
+    return r.stdout
+
+
+def same_bytes(a, b, what):
+    check(open(path(a), "rb").read() == open(path(b), "rb").read(), f"{what}: {a} differs from {b}")
+
+
+dlab("convert", "p2.txt", "m2_vtu.dat", "--simplices", "t2.txt", "--format", "vtu")
+m = meshio.read(path("m2_vtu.dat"), file_format="vtu")
+same_points(m.points, p2, "--format vtu")
+same_cells(m, "triangle", t2, "--format vtu")
+same_bytes("m2_vtu.dat", "m2.vtu", "--format vtu")
+dlab("convert", "p2.txt", "m2_off.vtu", "--simplices", "t2.txt", "--format", "off")  # the option wins
+same_bytes("m2_off.vtu", "m2.off", "--format off over the .vtu extension")
+out = dlab_bytes("convert", "p2.txt", "-", "--simplices", "t2.txt", "--format", "off")
+check(out == open(path("m2.off"), "rb").read(), "--format off to standard output: not m2.off's bytes")
+out = dlab_bytes("convert", "p3.txt", "-", "--simplices", "t3.txt", "--format", "vtu")
+check(out == open(path("m3.vtu"), "rb").read(), "--format vtu to standard output: not m3.vtu's bytes")
+dlab("convert", "p3.txt", "m3_named", "--simplices", "t3.txt", "--format", "node")  # BASE without .node
+for ext in (".node", ".ele", ".face"):
+    same_bytes("m3_named" + ext, "m3" + ext, "--format node, OUT without extension")
+shutil.copy(path("v.xyz"), path("v_xyz.dat"))
+dlab("convert", "v_xyz.dat", "v_dat.vtu", "--input-format", "xyz")
+same_points(meshio.read(path("v_dat.vtu")).points, xyz, "--input-format xyz")
+out = dlab_bytes("convert", "-", "-", "--input-format", "ply", "--format", "vtu", stdin=open(path("v.ply"), "rb").read())
+with open(path("v_stdin.vtu"), "wb") as f:
+    f.write(out)
+same_points(meshio.read(path("v_stdin.vtu")).points, meshio.read(path("v.ply")).points, "--input-format ply from stdin")
+shutil.copy(path("m3.node"), path("m3_node.dat"))
+dlab("triangulate", "m3_node.dat", "--input-format", "node", "-o", "t3_again.txt")
+same_bytes("t3_again.txt", "t3.txt", "dlab triangulate --input-format node")
+r = dlab("convert", "m2.node", "x.vtu", "--input-format", "text", expect=2)  # its header: 4 numbers
+check("m2.node:1:" in r.stderr, f"--input-format text on a .node file: {r.stderr.strip()}")
+r = dlab("convert", "p2.txt", "x.vtu", "--format", "stl", expect=2)
+check("unknown format 'stl'" in r.stderr and "node, vtu, off" in r.stderr, f"--format stl: {r.stderr.strip()}")
+r = dlab("triangulate", "p2.txt", "--input-format", "stl", expect=2)
+check("unknown input format 'stl'" in r.stderr and "text, node, xyz, off, ply" in r.stderr,
+      f"--input-format stl: {r.stderr.strip()}")
+r = dlab("convert", "p2.txt", "mesh", expect=2)
+check("--format" in r.stderr, f"OUT without extension, no --format: {r.stderr.strip()}")
+r = dlab("convert", "p2.txt", "-", "--format", "node", expect=2)
+check("several files" in r.stderr, f"--format node to standard output: {r.stderr.strip()}")
 
 print(f"{len(failures)} failure(s)" if failures else "formats: all checks passed")
 sys.exit(1 if failures else 0)
