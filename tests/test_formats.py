@@ -257,6 +257,10 @@ for ext in (".node", ".ele", ".face"):
 shutil.copy(path("v.xyz"), path("v_xyz.dat"))
 dlab("convert", "v_xyz.dat", "v_dat.vtu", "--input-format", "xyz")
 same_points(meshio.read(path("v_dat.vtu")).points, xyz, "--input-format xyz")
+with open(path("flat.dat"), "w") as f:  # every z is 0: 2D as .xyz, 3D as plain text
+    f.write("0 0 0\n1 0 0\n0 1 0\n")
+dlab("convert", "flat.dat", "flat.node", "--input-format", "xyz")
+check(open(path("flat.node")).readline().split()[:2] == ["3", "2"], "--input-format xyz: flat.dat not read as 2D")
 out = dlab_bytes("convert", "-", "-", "--input-format", "ply", "--format", "vtu", stdin=open(path("v.ply"), "rb").read())
 with open(path("v_stdin.vtu"), "wb") as f:
     f.write(out)
