@@ -10,9 +10,12 @@
 //   add_unsigned(cl.app(), "--seed", seed, UINT64_MAX, "seed of the order");
 //   if (auto rc = cl.parse(argc, argv, 2)) return *rc;  // --help: 0, bad usage: 2
 //
-// A lone "-" is positional; so is a negative number ("-1.5", "-0x1p-3") where
-// no option of that name exists. Options may be given as "--seed 7",
-// "--seed=7" or "-o FILE"; given twice, the last one counts. "--" ends options.
+// A lone "-" is positional; so is a token that starts with '-' and a digit
+// ("-1.5", "-0x1p-3"; CLI11: no option is named "-1"). "-.5" or "-inf" are
+// positional after app().positionals_at_end(true) once the first positional
+// is read (dlab predicate), or after "--". Option values may start with '-'
+// ("--lo -2"). Options may be given as "--seed 7", "--seed=7" or "-o FILE";
+// given twice, the last one counts (a std::vector positional takes them all).
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -77,8 +77,7 @@ int corpus_replay(int argc, char** argv) {
   std::string algos, kernels;
   CommandLine cl("corpus", kCorpusSynopsis, kCorpusDescription, kCorpusExamples, kCorpusEpilogue);
   CLI::App& app = cl.app();
-  app.add_option("DIR|FILE", o.inputs, "corpus directories (every *.pts, in name order) or case files")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("DIR|FILE", o.inputs, "corpus directories (every *.pts, in name order) or case files");
   app.add_option("--algo", algos, "only these algorithms (comma-separated; default all 6)")->type_name("LIST");
   app.add_option("--kernel", kernels, "only these kernels (comma-separated; default all 5)")->type_name("LIST");
   const LimitOptions limits(app);

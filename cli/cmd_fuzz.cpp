@@ -48,8 +48,7 @@ int fuzz_merge(int argc, char** argv) {
   std::vector<std::string> dirs;
   std::string out;
   CommandLine cl("fuzz", kFuzzSynopsis, kFuzzDescription, kFuzzExamples, kFuzzEpilogue);
-  cl.app().add_option("DIR", dirs, "the n shard directories of one campaign")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cl.app().add_option("DIR", dirs, "the n shard directories of one campaign");
   cl.app().add_option("--out", out, "the merged campaign's directory")->required();
   if (auto rc = cl.parse(argc, argv, 3)) return *rc;
   if (dirs.empty()) return cl.usage_error("no shard directories given");

@@ -55,8 +55,7 @@ int cmd_predicate(int argc, char** argv) {
       ->required();
   app.add_option("K", kernel, "the kernel: adaptive, integer, mp (exact); float, epsilon (inexact)")
       ->required();
-  app.add_option("COORD", coords, "x y (2D) or x y z (3D) of each point in turn")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("COORD", coords, "x y (2D) or x y z (3D) of each point in turn");
   if (auto rc = cl.parse(argc, argv, 2)) return *rc;
   try {
     int dim = 0, npts = 0;

@@ -60,8 +60,7 @@ int cmd_study(int argc, char** argv) {
                  kStudyEpilogue);
   CLI::App& app = cl.app();
   app.add_option(merge ? "DIR" : "CONFIG.json", positional,
-                 merge ? "the shard directories of one study" : "the study's config (studies/README.md)")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+                 merge ? "the shard directories of one study" : "the study's config (studies/README.md)");
   app.add_option("--out", out, merge ? "the merged study's directory" : "the study's directory")
       ->type_name("DIR")->required();
   if (!merge) {
