@@ -37,10 +37,14 @@
 //     on the open side, or, once there is a best candidate, none in its
 //     circumsphere. The apex is near the facet, so the first leaves give a
 //     small sphere and the climb costs about one box test per level. The
-//     sphere's centre and radius are ENCLOSED by interval arithmetic
-//     (algorithms/interval.hpp), so a skipped box never meets the ball: the
-//     tree never decides the winner. (A uniform bucket grid, used here
-//     before, failed on uneven sets: see kd_tree.hpp.)
+//     pruning ball is a sphere of the pencil through f whose open-side part
+//     contains the best candidate's sphere's (ball_of), its centre and radius
+//     ENCLOSED by interval arithmetic (algorithms/interval.hpp), so a skipped
+//     box never meets the ball: the tree never decides the winner. The ball
+//     is recomputed once per leaf that improved the best (once for all the
+//     first leaves), not per improvement: the old one still contains the new
+//     best's open-side cap. (A uniform bucket grid, used here before, failed
+//     on uneven sets: see kd_tree.hpp.)
 //   * Inexact kernels: a facet met by a third simplex, or twice on the same
 //     side, a simplex budget exceeded, or a point left out end the run with
 //     Outcome::failed; every loop is bounded.
@@ -125,13 +129,18 @@ class Tanemura {
     double r2 = 0;        // upper bound of the squared radius
     double r2_prune = 0;  // r2 with the slack of box_may_meet_ball
   };
-  Ball ball_of(const Facet& f, std::uint32_t c) const;
+  // flatten: the interval operations inlined (half of the search's cost was
+  // their calls on uniform 3D input).
+  [[gnu::flatten]] Ball ball_of(const Facet& f, std::uint32_t c);
+  [[gnu::flatten]] void make_pencil(const Facet& f);  // fc_, fr2_ (once per search)
+  Ball circumsphere_ball(const Facet& f, std::uint32_t c) const;
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                          const Ball& ball) const;
   bool point_may_be_in_ball(const Point<D>& p) const;
   // Examines the points of a leaf; then the ball follows the best candidate.
   void scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf);
+  void refresh_ball(const Facet& f);  // ball_ for best_ if it is stale
   // Visits the subtree of node k, pruned, the child nearer target_ first;
   // with skip_first_leaves, not the leaves in first_leaves_ (scanned already).
   void visit(const Facet& f, std::uint32_t k, bool skip_first_leaves);
@@ -149,17 +158,28 @@ class Tanemura {
   // search state
   std::array<Iv, D> f0_{};           // scaled first facet vertex
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
+  bool pencil_ready_ = false;        // nn_, fc_, fr2_ computed for this facet
+  Iv nn_{};                          // |nrm_|^2
+  std::array<Iv, D> fc_{};           // centre of the facet's circumcircle - f0 (enclosure)
+  std::array<Iv, D> fcen_{};         // f0 + fc_ (enclosure)
+  Iv fr2_{};                         // its squared radius (enclosure)
   std::array<double, D> target_{};   // the facet's centroid (scaled, rounded): visit order only
   std::array<std::uint32_t, D> first_leaves_{};  // the leaves of the facet's vertices
   std::uint32_t best_ = kNone;
-  Ball ball_;  // enclosure of the circumsphere of (f, best_); stale while best_ == kNone
+  // An enclosure of the circumsphere of (f, b) for best_ or an earlier best b
+  // of this search (valid: there is one; stale: best_ has moved since, within
+  // the leaf being scanned: a sound prune still, see scan_leaf).
+  Ball ball_;
+  bool ball_valid_ = false, ball_stale_ = false;
+  bool defer_ball_ = false;  // scan_leaf leaves the ball stale (search refreshes it)
   // counters
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
-                nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0;
+                balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0;
 };
 
 template <class K, int D>
-typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint32_t c) const {
+typename Tanemura<K, D>::Ball Tanemura<K, D>::circumsphere_ball(const Facet& f, std::uint32_t c) const {
+  // The circumsphere of (f, c) itself, for inexact kernels (see refresh_ball).
   Ball b;
   std::array<std::array<Iv, D>, V> q;
   for (int j = 0; j < V; ++j) {
@@ -198,6 +218,74 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint3
     r2 = r2 + sq(o[i]);
     if (!b.centre[i].bounded()) return b;
   }
+  if (!r2.bounded()) return b;
+  b.r2 = r2.hi;
+  b.r2_prune = r2.hi * (1 + 0x1p-44) + 0x1p-1000;
+  b.bounded = true;
+  return b;
+}
+
+template <class K, int D>
+void Tanemura<K, D>::make_pencil(const Facet& f) {
+  // Enclosures of the centre c of f's circumcircle (relative to f0) and of
+  // R^2 = |c|^2. 2D: the midpoint. 3D, with u = q1 - q0, v = q2 - q0, n = u x v:
+  // c = (|u|^2 (v x n) + |v|^2 (n x u)) / (2 |n|^2) (the circumcentre of a
+  // triangle in space; e.g. Schneider & Eberly, Geometric Tools, 2003, §13).
+  pencil_ready_ = true;
+  nn_ = Iv{0, 0};
+  for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
+  std::array<Iv, D> c;
+  if constexpr (D == 2) {
+    for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[f[1]][i]) - f0_[i]) * Iv{0.5, 0.5};
+  } else {
+    std::array<Iv, 3> u, v;
+    for (int i = 0; i < 3; ++i) {
+      u[i] = tree_.scaled_iv(pts_[f[1]][i]) - f0_[i];
+      v[i] = tree_.scaled_iv(pts_[f[2]][i]) - f0_[i];
+    }
+    const auto cross = [](const std::array<Iv, 3>& x, const std::array<Iv, 3>& y) {
+      return std::array<Iv, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                               x[0] * y[1] - x[1] * y[0]};
+    };
+    const Iv uu = sq(u[0]) + sq(u[1]) + sq(u[2]), vv = sq(v[0]) + sq(v[1]) + sq(v[2]);
+    const auto vn = cross(v, nrm_), nu = cross(nrm_, u);
+    const Iv two_nn = (nn_ + nn_);
+    for (int i = 0; i < 3; ++i) c[i] = (uu * vn[i] + vv * nu[i]) / two_nn;
+  }
+  Iv r2{0, 0};
+  for (int i = 0; i < D; ++i) r2 = r2 + sq(c[i]);
+  fc_ = c;
+  for (int i = 0; i < D; ++i) fcen_[i] = f0_[i] + c[i];
+  fr2_ = r2;
+}
+
+template <class K, int D>
+typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint32_t c) {
+  // The spheres through f form a pencil: centre f0 + fc + t n, squared radius
+  // R^2 + t^2 |n|^2 (n = nrm_ is orthogonal to fc and to the facet). The one
+  // through c has t_c = (|d - fc|^2 - R^2) / (2 n.d), d = c - f0, and a point
+  // p on the open side is inside S_t iff t exceeds t_p; so for any T >= t_c
+  // the open-side part of S_T contains that of S_{t_c}, which is all that a
+  // prune needs (the box tests keep the other side out). T is the upper end
+  // of an enclosure of t_c, a double, so the centre is f0 + fc + T n with
+  // enclosed roundings only.
+  Ball b;
+  if (!pencil_ready_) make_pencil(f);
+  std::array<Iv, D> d;
+  for (int i = 0; i < D; ++i) d[i] = tree_.scaled_iv(pts_[c][i]) - f0_[i];
+  Iv num = Iv{0, 0} - fr2_, den{0, 0};
+  for (int i = 0; i < D; ++i) {
+    num = num + sq(d[i] - fc_[i]);
+    den = den + nrm_[i] * d[i];
+  }
+  const Iv t = num / (den + den);
+  if (!t.bounded()) return b;
+  const Iv T = Iv::exact(t.hi);
+  for (int i = 0; i < D; ++i) {
+    b.centre[i] = fcen_[i] + T * nrm_[i];
+    if (!b.centre[i].bounded()) return b;
+  }
+  const Iv r2 = fr2_ + sq(T) * nn_;
   if (!r2.bounded()) return b;
   b.r2 = r2.hi;
   b.r2_prune = r2.hi * (1 + 0x1p-44) + 0x1p-1000;
@@ -269,18 +357,37 @@ void Tanemura<K, D>::scan_leaf(const Facet& f, const typename KdTree<D>::Node& l
     ++examined_;
     const Point<D>& p = tree_.coords(k);
     // Certainly outside the current best sphere: cannot improve it.
-    if (best_ != kNone && ball_.bounded && !point_may_be_in_ball(p)) continue;
+    if (ball_valid_ && ball_.bounded && !point_may_be_in_ball(p)) continue;
     if (orient(f, p) != Sign::positive) continue;
     ++candidates_;
     if (best_ == kNone || inside(f, pts_[best_], p) == Sign::positive) {
       // A better candidate lies inside the current sphere, on the open side,
       // and its own sphere's open-side part lies inside the old one's (same
-      // pencil, smaller offset): the pruning ball only ever shrinks there.
+      // pencil, smaller offset): the old ball still prunes soundly for the
+      // new best, so it is recomputed only once the leaf is done.
       best_ = id;
-      ball_ = ball_of(f, best_);
+      ball_stale_ = true;
       ++improvements_;
+      if constexpr (!K::exact) refresh_ball(f);
     }
   }
+  if (!defer_ball_) refresh_ball(f);
+}
+
+template <class K, int D>
+void Tanemura<K, D>::refresh_ball(const Facet& f) {
+  if (!ball_stale_) return;
+  // Inexact kernels keep the search of the regression corpus's records
+  // (tests/corpus): the circumsphere itself, after every improvement. Their
+  // outcomes depend on which points reach the (inconsistent) predicates, and
+  // the pencil ball prunes other points at the rounding level.
+  if constexpr (K::exact)
+    ball_ = ball_of(f, best_);
+  else
+    ball_ = circumsphere_ball(f, best_);
+  ball_stale_ = false;
+  ball_valid_ = true;
+  ++balls_;
 }
 
 template <class K, int D>
@@ -297,8 +404,9 @@ template <class K, int D>
 void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leaves) {
   const typename KdTree<D>::Node& n = tree_.node(k);
   ++nodes_visited_;
+  // The ball test first: it is cheaper and, during the climb, prunes most nodes.
+  if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (!box_may_be_outer(n.lo, n.hi)) return;
-  if (best_ != kNone && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (KdTree<D>::is_leaf(n)) {
     if (skip_first_leaves)
       for (int j = 0; j < D; ++j)
@@ -315,6 +423,7 @@ template <class K, int D>
 std::uint32_t Tanemura<K, D>::search(const Facet& f) {
   ++searches_;
   best_ = kNone;
+  ball_valid_ = ball_stale_ = false;
   // Outer normal enclosure (scaled): orient_pos(f, p) has the sign of nrm . (p - f0).
   std::array<std::array<Iv, D>, D> q;
   for (int j = 0; j < D; ++j)
@@ -329,6 +438,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     const auto cross = [&](int j, int k) { return tight_sub(tight_mul(u[j], v[k]), tight_mul(u[k], v[j])); };
     nrm_ = {cross(1, 2), cross(2, 0), cross(0, 1)};
   }
+  pencil_ready_ = false;
   for (int i = 0; i < D; ++i) {
     double s = 0;
     for (int j = 0; j < D; ++j) s += q[j][i].lo;
@@ -339,12 +449,17 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
   // near vertex); then bottom-up from the leaf of f[0], each sibling on the
   // way to the root. Every node is visited or pruned: the search is
   // exhaustive. The vertices' leaves are not scanned twice.
+  // The ball follows the best of all these leaves (one computation, not one
+  // per leaf that improved it).
+  for (int j = 0; j < D; ++j) first_leaves_[j] = tree_.leaf_of(f[j]);
+  defer_ball_ = true;
   for (int j = 0; j < D; ++j) {
-    first_leaves_[j] = tree_.leaf_of(f[j]);
     bool seen = false;
     for (int i = 0; i < j; ++i) seen |= first_leaves_[i] == first_leaves_[j];
     if (!seen) visit(f, first_leaves_[j], false);
   }
+  defer_ball_ = false;
+  refresh_ball(f);
   std::uint32_t k = first_leaves_[0];
   while (k != KdTree<D>::root()) {
     visit(f, tree_.sibling(k), true);
@@ -499,6 +614,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"points_examined_per_facet_x1000", per_facet_x1000},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
+      {"balls_computed", balls_},
       {"nodes_visited", nodes_visited_},
       {"leaves_visited", leaves_visited_},
       {"max_front", table_.max_size()},
