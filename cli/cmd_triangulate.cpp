@@ -12,7 +12,6 @@
 #include <iostream>
 #include <memory>
 #include <utility>
-#include <string_view>
 
 #include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
