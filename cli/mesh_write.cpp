@@ -40,8 +40,8 @@ MeshFormat choose_mesh_format(std::string_view path, std::string_view name) {
   if (!name.empty()) throw InputError("unknown format '" + std::string(name) + "' (choices: " + choices + ")");
   MeshFormat format{};
   if (!mesh_format_of(path, format))
-    throw InputError("'" + std::string(path) + "': no format by its extension (.node, .vtu or .off): name one with --format (" +
-                     choices + ")");
+    throw InputError("'" + std::string(path) +
+                     "': no format by its extension (.node, .vtu or .off): name one with --format (" + choices + ")");
   return format;
 }
 

@@ -301,7 +301,8 @@ PointSet read_points(const std::string& path, std::string_view format) {
     for (const char* c : kInputFormats) choices += std::string(choices.empty() ? "" : ", ") + c;
     throw InputError("unknown input format '" + f + "' (choices: " + choices + ")");
   }
-  if (f == "xyz" || f == "off" || f == "ply") return parse_vertex_list(read_file(path), display_name(path), "." + f);
+  if (f == "xyz" || f == "off" || f == "ply")
+    return parse_vertex_list(read_file(path), display_name(path), "." + f);
   if (path == "-") return read_points(std::cin, display_name(path), f == "node");
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read: is a directory");
