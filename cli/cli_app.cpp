@@ -50,9 +50,12 @@ std::string message_of(const CLI::ParseError& e) {
   static const std::regex needs_value(R"(^(\S+): 1 required \S+ missing$)");
   static const std::regex required(R"(^(\S+) is required$)");
   static const std::regex excludes(R"(^(\S+) excludes (\S+)$)");
+  static const std::regex flag_value(R"(^Could not convert: (\S+) = (.*)$)");  // our flags only convert
   if (std::regex_match(what, m, needs_value)) return "option " + m[1].str() + " needs a value";
   if (std::regex_match(what, m, required)) return "missing " + m[1].str();
   if (std::regex_match(what, m, excludes)) return m[1].str() + " and " + m[2].str() + " exclude each other";
+  if (std::regex_match(what, m, flag_value))
+    return "option " + m[1].str() + " takes no value (given '" + m[2].str() + "')";
   return what;
 }
 

@@ -675,6 +675,7 @@ dlab_case(number_range_option RC 2 ERR "^dlab fuzz: --jobs: '0' is not an intege
 dlab_case(number_negative_value RC 0 OUT "^-0x1.[0-9a-f]+p[+]0 -0x1.[0-9a-f]+p[+]0\n$" ARGS gen uniform --n 1 --lo -2 --hi=-1)
 dlab_case(number_hex_value RC 0 OUT "^0x1p[+]0 0x1p[+]0\n$" ARGS gen uniform --n 1 --lo 0x1p0 --hi 0x1p0)
 dlab_case(option_twice_last RC 0 OUT "^0x1p[+]1 0x1p[+]1\n$" ARGS gen uniform --n 1 --lo 1 --hi 1 --lo 2 --hi 2)
+dlab_case(flag_with_value RC 2 ERR "^dlab triangulate: option --validate takes no value \\(given 'maybe'\\)\n$" ARGS triangulate square.txt --validate=maybe)
 dlab_case(missing_value_long RC 2 ERR "^dlab gen: option --seed needs a value\n$" ARGS gen uniform --seed)
 dlab_case(stdin_positional RC 0 OUT "valid Delaunay" IN "${WORK}/square.txt" ARGS check - square.tri)
 # Negative numbers are positional where no option has their name: "-.5", "-inf".
