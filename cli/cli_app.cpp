@@ -44,6 +44,8 @@ class HelpFormatter : public CLI::Formatter {
 };
 
 // CLI11's message, in the words of design.md section 5 where they are clearer.
+// The patterns are CLI11 2.x's texts; another text stands as CLI11 wrote it
+// (still exit 2), and tests/test_cli.cmake would show the change.
 std::string message_of(const CLI::ParseError& e) {
   const std::string what = e.what();
   std::smatch m;
