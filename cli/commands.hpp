@@ -12,6 +12,7 @@ int cmd_predicate(int argc, char** argv);
 int cmd_gen(int argc, char** argv);
 int cmd_demo(int argc, char** argv);
 int cmd_draw(int argc, char** argv);
+int cmd_voronoi(int argc, char** argv);
 int cmd_flip(int argc, char** argv);
 int cmd_plot(int argc, char** argv);
 int cmd_fuzz(int argc, char** argv);

@@ -26,6 +26,8 @@ const char* const kUsage =
     "  dlab flip INPUT --make-start [--seed S] [--flips K] [-o OUT]  a non-Delaunay start\n"
     "  dlab draw POINTS SIMPLICES -o FILE.svg [--circles] [--labels]  2D picture, faults marked\n"
     "                                   by the exact validator (dlab draw --help)\n"
+    "  dlab voronoi POINTS [SIMPLICES] -o OUT.svg|OUT.vtu [--box B]  the Voronoi dual, cells cut\n"
+    "                                   by a box, exactly rounded centres (dlab voronoi --help)\n"
     "  dlab demo                        the predicate sign-map experiment and the kernel matrix\n"
     "  dlab plot STUDY_DIR [--out DIR]  SVG + PNG figures of a study's runs.csv (dlab plot --help)\n"
     "  dlab fuzz --out DIR (--cases C | --budget T) [--algo LIST] [--kernel LIST] [--gen LIST]\n"
@@ -68,6 +70,7 @@ int main(int argc, char** argv) {
     if (cmd == "gen") return dlab::cli::cmd_gen(argc, argv);
     if (cmd == "demo") return dlab::cli::cmd_demo(argc, argv);
     if (cmd == "draw") return dlab::cli::cmd_draw(argc, argv);
+    if (cmd == "voronoi") return dlab::cli::cmd_voronoi(argc, argv);
     if (cmd == "flip") return dlab::cli::cmd_flip(argc, argv);
     if (cmd == "plot") return dlab::cli::cmd_plot(argc, argv);
     if (cmd == "fuzz") return dlab::cli::cmd_fuzz(argc, argv);
