@@ -51,7 +51,9 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -100,6 +102,12 @@ class Tanemura {
   // (predicates/perturbed.hpp), so that ties are decided consistently and the
   // front stays a triangulation (an arbitrary choice among cospherical
   // candidates could make overlapping simplices in 3D).
+  // Positive iff p is strictly inside the circumsphere of the positive simplex
+  // (f, c). With the sos policy K is perturbed<...> and never answers zero
+  // here; with `strict` an exact zero is broken by the same symbolic walk
+  // (predicates/perturbed.hpp), so that ties are decided consistently and the
+  // front stays a triangulation (an arbitrary choice among cospherical
+  // candidates could make overlapping simplices in 3D).
   Sign inside(const Facet& f, const Point<D>& c, const Point<D>& p) const {
     if constexpr (D == 2) {
       const Point2 &a = pts_[f[0]], &b = pts_[f[1]];
@@ -119,6 +127,12 @@ class Tanemura {
     }
   }
 
+  static double l1(const Point<D>& x, const Point<D>& y) {
+    double s = 0;
+    for (int i = 0; i < D; ++i) s += std::fabs(x[i] - y[i]);
+    return s;  // a heuristic only (overflow to inf is harmless)
+  }
+
   std::uint32_t search(const Facet& f);
   bool add_simplex(const Facet& f, std::uint32_t p);  // false: failure (message_ set)
 
@@ -132,7 +146,7 @@ class Tanemura {
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
   [[gnu::flatten]] Ball ball_of(const Facet& f, std::uint32_t c);
-  [[gnu::flatten]] void make_pencil(const Facet& f);  // fc_, fr2_ (once per search)
+  [[gnu::flatten]] void make_pencil(const Facet& f);  // nn_, fcen_, fr2_, vc_ (once per search)
   Ball circumsphere_ball(const Facet& f, std::uint32_t c) const;
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
@@ -156,12 +170,14 @@ class Tanemura {
   bool keep_closed_ = !K::exact;
   std::uint64_t max_simplices_ = 0;
   // search state
-  std::array<Iv, D> f0_{};           // scaled first facet vertex
+  Facet base_{};                     // the facet rotated for the enclosures (see search)
+  std::array<Iv, D> f0_{};           // scaled base_[0]
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
-  bool pencil_ready_ = false;        // nn_, fc_, fr2_ computed for this facet
+  bool pencil_ready_ = false;        // nn_, fcen_, fr2_, vc_ computed for this facet
   Iv nn_{};                          // |nrm_|^2
-  std::array<Iv, D> fc_{};           // centre of the facet's circumcircle - f0 (enclosure)
-  std::array<Iv, D> fcen_{};         // f0 + fc_ (enclosure)
+  std::array<Iv, D> fcen_{};         // centre C of the facet's circumcircle (enclosure)
+  std::array<std::array<Iv, D>, D> bq_{};  // scaled base_ vertices (bq_[0] = f0_)
+  std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - C (enclosures)
   Iv fr2_{};                         // its squared radius (enclosure)
   std::array<double, D> target_{};   // the facet's centroid (scaled, rounded): visit order only
   std::array<std::uint32_t, D> first_leaves_{};  // the leaves of the facet's vertices
@@ -172,6 +188,7 @@ class Tanemura {
   Ball ball_;
   bool ball_valid_ = false, ball_stale_ = false;
   bool defer_ball_ = false;  // scan_leaf leaves the ball stale (search refreshes it)
+  int near_f_at_ = 0;  // an end of the facet's shortest edge (L1; index in f)
   // counters
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
                 balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0;
@@ -236,12 +253,12 @@ void Tanemura<K, D>::make_pencil(const Facet& f) {
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
   std::array<Iv, D> c;
   if constexpr (D == 2) {
-    for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[f[1]][i]) - f0_[i]) * Iv{0.5, 0.5};
+    for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[base_[1]][i]) - f0_[i]) * Iv{0.5, 0.5};
   } else {
     std::array<Iv, 3> u, v;
     for (int i = 0; i < 3; ++i) {
-      u[i] = tree_.scaled_iv(pts_[f[1]][i]) - f0_[i];
-      v[i] = tree_.scaled_iv(pts_[f[2]][i]) - f0_[i];
+      u[i] = tree_.scaled_iv(pts_[base_[1]][i]) - f0_[i];
+      v[i] = tree_.scaled_iv(pts_[base_[2]][i]) - f0_[i];
     }
     const auto cross = [](const std::array<Iv, 3>& x, const std::array<Iv, 3>& y) {
       return std::array<Iv, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
@@ -254,30 +271,43 @@ void Tanemura<K, D>::make_pencil(const Facet& f) {
   }
   Iv r2{0, 0};
   for (int i = 0; i < D; ++i) r2 = r2 + sq(c[i]);
-  fc_ = c;
   for (int i = 0; i < D; ++i) fcen_[i] = f0_[i] + c[i];
   fr2_ = r2;
+  for (int j = 0; j < D; ++j)
+    for (int i = 0; i < D; ++i)
+      vc_[j][i] = j == 0 ? Iv{-c[i].hi, -c[i].lo} : bq_[j][i] - fcen_[i];
 }
 
 template <class K, int D>
 typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint32_t c) {
-  // The spheres through f form a pencil: centre f0 + fc + t n, squared radius
-  // R^2 + t^2 |n|^2 (n = nrm_ is orthogonal to fc and to the facet). The one
-  // through c has t_c = (|d - fc|^2 - R^2) / (2 n.d), d = c - f0, and a point
-  // p on the open side is inside S_t iff t exceeds t_p; so for any T >= t_c
-  // the open-side part of S_T contains that of S_{t_c}, which is all that a
-  // prune needs (the box tests keep the other side out). T is the upper end
-  // of an enclosure of t_c, a double, so the centre is f0 + fc + T n with
-  // enclosed roundings only.
+  // The spheres through f form a pencil: centre C + t n (C = f0 + fc, the
+  // centre of f's circumcircle), squared radius R^2 + t^2 |n|^2 (n = nrm_ is
+  // orthogonal to the facet). The one through c has
+  //   t_c = (|c - C|^2 - R^2) / (2 n.(c - f0)),
+  // and a point p on the open side is inside S_t iff t exceeds t_p; so for any
+  // T >= t_c the open-side part of S_T contains that of S_{t_c}, which is all
+  // that a prune needs (the box tests keep the other side out). T is the
+  // upper end of an enclosure of t_c, a double, so the centre is C + T n with
+  // enclosed roundings only. Both terms are evaluated from the facet vertex v
+  // nearest to c, with e = c - v (exact identities for the true values, as
+  // |v - C| = R and n.(v - f0) = 0):
+  //   |c - C|^2 - R^2 = |e|^2 + 2 e.(v - C),   n.(c - f0) = n.e.
+  // From f0 instead, when c is a near-duplicate of another vertex, both
+  // cancel to below their rounding errors and t is unbounded or far too big.
   Ball b;
   if (!pencil_ready_) make_pencil(f);
-  std::array<Iv, D> d;
-  for (int i = 0; i < D; ++i) d[i] = tree_.scaled_iv(pts_[c][i]) - f0_[i];
-  Iv num = Iv{0, 0} - fr2_, den{0, 0};
+  int k = 0;
+  double near = l1(pts_[c], pts_[base_[0]]);
+  for (int j = 1; j < D; ++j)
+    if (const double dj = l1(pts_[c], pts_[base_[j]]); dj < near) near = dj, k = j;
+  Iv num{0, 0}, cross{0, 0}, den{0, 0};
   for (int i = 0; i < D; ++i) {
-    num = num + sq(d[i] - fc_[i]);
-    den = den + nrm_[i] * d[i];
+    const Iv e = tree_.scaled_iv(pts_[c][i]) - bq_[k][i];
+    num = num + sq(e);
+    cross = cross + e * vc_[k][i];
+    den = den + nrm_[i] * e;
   }
+  num = num + (cross + cross);
   const Iv t = num / (den + den);
   if (!t.bounded()) return b;
   const Iv T = Iv::exact(t.hi);
@@ -423,12 +453,24 @@ template <class K, int D>
 std::uint32_t Tanemura<K, D>::search(const Facet& f) {
   ++searches_;
   best_ = kNone;
+  double near_f = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < D; ++j)
+    for (int i = j + 1; i < D; ++i)
+      if (const double d = l1(pts_[f[i]], pts_[f[j]]); d < near_f) near_f = d, near_f_at_ = j;
   ball_valid_ = ball_stale_ = false;
   // Outer normal enclosure (scaled): orient_pos(f, p) has the sign of nrm . (p - f0).
+  // The enclosures below start from an end of the facet's shortest edge
+  // (a rotation: same orientation). From the far vertex of a sliver facet
+  // (two near-duplicate vertices), both edges are long and inexact, their
+  // cross product cancels to below its rounding error, and the normal's
+  // enclosure then spans zero: no pruning at all (3D near-duplicates).
+  base_ = f;
+  if (K::exact) std::rotate(base_.begin(), base_.begin() + near_f_at_, base_.end());
   std::array<std::array<Iv, D>, D> q;
   for (int j = 0; j < D; ++j)
-    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[f[j]][i]);
+    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[base_[j]][i]);
   f0_ = q[0];
+  bq_ = q;
   if constexpr (D == 2) {
     const Iv ux = tight_sub(q[1][0], q[0][0]), uy = tight_sub(q[1][1], q[0][1]);
     nrm_ = {tight_sub(Iv{0, 0}, uy), ux};
