@@ -33,15 +33,16 @@ std::optional<int> parse_voronoi_options(int argc, char** argv, VoronoiOptions& 
   app.add_option("POINTS", o.points, "the sites (as dlab triangulate reads them; '-': standard input)")
       ->required();
   app.add_option("SIMPLICES", o.simplices,
-                 "their Delaunay triangulation (d+1 indices per line, positively oriented); checked by\n"
-                 "the exact validator. Absent: POINTS is triangulated with --algo/--kernel");
+                 "their Delaunay triangulation (d+1 indices per line, positively oriented),\n"
+                 "checked by the exact validator; absent: POINTS is triangulated here");
   app.add_option("-o", o.out, "OUT.svg (2D) or OUT.vtu (2D or 3D)")->required()->type_name("FILE");
   app.add_option("--box", o.box,
-                 "xmin,ymin,xmax,ymax (2D) or x0,y0,z0,x1,y1,z1 (3D). Default: the sites' bounding box\n"
-                 "enlarged by 10 % of its extent on each side (an extent of 0 takes the largest one, or 1)")
+                 "xmin,ymin,xmax,ymax (2D) or x0,y0,z0,x1,y1,z1 (3D). Default: the sites'\n"
+                 "bounding box enlarged by 10 % of its extent on each side (an extent of 0\n"
+                 "takes the largest one's, or 1)")
       ->type_name("B");
-  app.add_option("--algo", o.run.algorithm, "algorithm of the triangulation")->type_name("A");
-  app.add_option("--kernel", o.run.kernel, "kernel of the triangulation")->type_name("K");
+  app.add_option("--algo", o.run.algorithm, "bowyer-watson (default), lawson, tanemura, george")->type_name("A");
+  app.add_option("--kernel", o.run.kernel, "adaptive (default), integer, mp; float, epsilon (inexact: exit 1 on failure)")->type_name("K");
   add_choice(app, "--policy", o.run.policy, kPolicies, "sos or strict");
   add_choice(app, "--order", o.run.order, kOrders, "insertion order");
   add_unsigned(app, "--seed", o.run.seed, UINT64_MAX, "seed of the order");
