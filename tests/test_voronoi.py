@@ -279,6 +279,23 @@ with open(path("cube.txt"), "w") as f:
 dlab("voronoi", "cube.txt", "-o", "cube.vtu")
 check_3d_cells("cube.vtu", read_vtu("cube.vtu"), [-0.3, -0.3, -0.3, 3.3, 3.3, 3.3])
 
+# round_quotient's boundaries (voronoi/circumcentre.hpp), one triangle each: exact ties
+# (ties to even, down and up), subnormal centres (a tie to 2^-1073, one to 0), overflow.
+for name, pts, want in [
+    ("tie_down", ["1 0", f"{float(2**53).hex()} 0", "1 1"], (2.0**52, 0.5)),
+    ("tie_up", ["1 0", f"{float(2**53 + 2).hex()} 0", "1 1"], (2.0**52 + 2, 0.5)),
+    ("subnormal", ["0 0", "0x0.0000000000003p-1022 0", "0 0x1p-1070"], (2.0**-1073, 2.0**-1071)),
+    ("to_zero", ["0 0", "0x0.0000000000001p-1022 0", "0 0x1p-1073"], (0.0, 2.0**-1074)),
+    ("overflow", ["0 0", "0x1p+1000 0", "0x1p+999 0x1p-1000"], (None, -math.inf)),
+]:
+    with open(path(name + ".txt"), "w") as f:
+        f.write("\n".join(pts) + "\n")
+    with open(path(name + ".tri"), "w") as f:
+        f.write("0 1 2\n")
+    dlab("voronoi", name + ".txt", name + ".tri", "-o", name + ".vtu")
+    got = read_vtu(name + ".vtu")["points"][0]
+    check(all(w is None or g == w for g, w in zip(got, want)), f"{name}: centre {got[:2]}, expected {want}")
+
 # Bad input: a non-Delaunay diagonal (line 2, after a comment), bad usage.
 with open(path("sq.txt"), "w") as f:
     f.write("0 0\n4 0\n4 1\n0 1.5\n")
