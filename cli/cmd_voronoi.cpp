@@ -88,6 +88,11 @@ void box_of(const std::string& text, const std::vector<Point<D>>& pts, Point<D>&
   }
 }
 
+bool ends_with(const std::string& s, const char* suffix) {
+  const std::string t = suffix;
+  return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
 // The line of SIMPLICES holding simplex k (comments and blank lines skipped,
 // as io::parse_simplices does).
 std::size_t line_of_simplex(const std::string& text, std::int64_t k) {
@@ -115,7 +120,7 @@ int write_diagram(const VoronoiOptions& o, const PointSet& points, const std::ve
     return cl.usage_error(e.what());
   }
   const voronoi::Diagram<D> d = voronoi::voronoi_cells(pts, simplices, lo, hi);
-  const bool svg = o.out.size() >= 4 && o.out.compare(o.out.size() - 4, 4, ".svg") == 0;
+  const bool svg = ends_with(o.out, ".svg");
   try {
     if constexpr (D == 2)
       io::write_text_file(o.out, svg ? voronoi_svg(d, pts, lo, hi) : voronoi_vtu(d));
@@ -155,8 +160,7 @@ int cmd_voronoi(int argc, char** argv) {
   PointSet points;
   std::vector<std::uint32_t> simplices;
   try {
-    const bool vtu = o.out.size() >= 4 && o.out.compare(o.out.size() - 4, 4, ".vtu") == 0;
-    const bool svg = o.out.size() >= 4 && o.out.compare(o.out.size() - 4, 4, ".svg") == 0;
+    const bool vtu = ends_with(o.out, ".vtu"), svg = ends_with(o.out, ".svg");
     if (!vtu && !svg) throw UsageError("-o must end in .svg or .vtu, not '" + o.out + "'");
     if (o.points == "-" && o.simplices == "-") throw UsageError("POINTS and SIMPLICES cannot both be standard input");
     points = io::read_points(o.points);
