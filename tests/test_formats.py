@@ -25,24 +25,7 @@ except ImportError as e:
     print(f"SKIP: {e} (apt-get install python3-meshio)")
     sys.exit(77)
 
-DLAB, WORK = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what)
-
-
-def dlab(*args, expect=0):
-    r = subprocess.run([DLAB, *args], cwd=WORK, capture_output=True, text=True, timeout=120)
-    check(r.returncode == expect, f"dlab {' '.join(args)}: exit {r.returncode}, expected {expect}\n{r.stderr}")
-    return r
-
-
-def path(name):
-    return os.path.join(WORK, name)
+from cli_checks import DLAB, WORK, check, dlab, finish, fresh_work_dir, path  # noqa: E402
 
 
 def read_hex_points(name):
@@ -85,9 +68,7 @@ def same_cells(mesh, ctype, want, what):
     check(mesh.cells[0].data.tolist() == want, f"{what}: cells differ from SIMPLICES")
 
 
-if os.path.isdir(WORK):
-    shutil.rmtree(WORK)
-os.makedirs(WORK)
+fresh_work_dir()
 
 # --- writers, 2D: .node/.ele/.neigh (parsed here: meshio's tetgen reader is 3D only), .vtu, .off
 dlab("gen", "uniform", "--n", "60", "--seed", "3", "-o", "p2.txt")
@@ -280,5 +261,4 @@ check("--format" in r.stderr, f"OUT without extension, no --format: {r.stderr.st
 r = dlab("convert", "p2.txt", "-", "--format", "node", expect=2)
 check("several files" in r.stderr, f"--format node to standard output: {r.stderr.strip()}")
 
-print(f"{len(failures)} failure(s)" if failures else "formats: all checks passed")
-sys.exit(1 if failures else 0)
+finish("formats")

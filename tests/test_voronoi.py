@@ -20,9 +20,6 @@ Exit 77 (skip) without numpy/scipy.
 usage: test_voronoi.py DLAB WORKDIR
 """
 import math
-import os
-import shutil
-import subprocess
 import sys
 import xml.etree.ElementTree as ET
 from fractions import Fraction
@@ -34,24 +31,7 @@ except ImportError as e:
     print(f"SKIP: {e}")
     sys.exit(77)
 
-DLAB, WORK = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what)
-
-
-def dlab(*args, expect=0):
-    r = subprocess.run([DLAB, *args], cwd=WORK, capture_output=True, text=True, timeout=120)
-    check(r.returncode == expect, f"dlab {' '.join(args)}: exit {r.returncode}, expected {expect}\n{r.stderr}")
-    return r
-
-
-def path(name):
-    return os.path.join(WORK, name)
+from cli_checks import check, dlab, finish, fresh_work_dir, path  # noqa: E402
 
 
 def read_points(name):
@@ -206,8 +186,7 @@ def same_bytes(args, out):
     check(open(path(out), "rb").read() == open(path("again_" + out), "rb").read(), f"{out}: not byte-identical")
 
 
-shutil.rmtree(WORK, ignore_errors=True)
-os.makedirs(WORK)
+fresh_work_dir()
 
 # 2D, general position; the box by default and given.
 with open(path("p2.txt"), "w") as f:
@@ -312,5 +291,4 @@ r = dlab("voronoi", "p3.txt", "-o", "x.svg", expect=2)
 check("3D points" in r.stderr, f"3D to SVG: {r.stderr!r}")
 check(dlab("voronoi", "--help").stdout.count("dlab voronoi ") >= 3, "--help without two examples")
 
-print(f"{len(failures)} failure(s)" if failures else "all voronoi checks passed")
-sys.exit(1 if failures else 0)
+finish("voronoi")
