@@ -145,8 +145,8 @@ class Tanemura {
   };
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
-  [[gnu::flatten]] Ball ball_of(const Facet& f, std::uint32_t c);
-  [[gnu::flatten]] void make_pencil(const Facet& f);  // nn_, fcen_, fr2_, vc_ (once per search)
+  [[gnu::flatten]] Ball ball_of(std::uint32_t c);
+  [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
   Ball circumsphere_ball(const Facet& f, std::uint32_t c) const;
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
@@ -243,11 +243,12 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::circumsphere_ball(const Facet& f, 
 }
 
 template <class K, int D>
-void Tanemura<K, D>::make_pencil(const Facet& f) {
-  // Enclosures of the centre c of f's circumcircle (relative to f0) and of
-  // R^2 = |c|^2. 2D: the midpoint. 3D, with u = q1 - q0, v = q2 - q0, n = u x v:
-  // c = (|u|^2 (v x n) + |v|^2 (n x u)) / (2 |n|^2) (the circumcentre of a
-  // triangle in space; e.g. Schneider & Eberly, Geometric Tools, 2003, §13).
+void Tanemura<K, D>::make_pencil() {
+  // Enclosures of the centre C = q0 + c of f's circumcircle, of R^2 = |c|^2
+  // and of each vertex minus C. 2D: c = (q1 - q0) / 2. 3D, with u = q1 - q0,
+  // v = q2 - q0, n = u x v: c = ((|u|^2 v - |v|^2 u) x n) / (2 |n|^2), the
+  // circumcentre of a triangle in space (e.g. Schneider & Eberly, Geometric
+  // Tools for Computer Graphics, 2003).
   pencil_ready_ = true;
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
@@ -279,7 +280,7 @@ void Tanemura<K, D>::make_pencil(const Facet& f) {
 }
 
 template <class K, int D>
-typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint32_t c) {
+typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   // The spheres through f form a pencil: centre C + t n (C = f0 + fc, the
   // centre of f's circumcircle), squared radius R^2 + t^2 |n|^2 (n = nrm_ is
   // orthogonal to the facet). The one through c has
@@ -295,7 +296,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(const Facet& f, std::uint3
   // From f0 instead, when c is a near-duplicate of another vertex, both
   // cancel to below their rounding errors and t is unbounded or far too big.
   Ball b;
-  if (!pencil_ready_) make_pencil(f);
+  if (!pencil_ready_) make_pencil();
   int k = 0;
   double near = l1(pts_[c], pts_[base_[0]]);
   for (int j = 1; j < D; ++j)
@@ -412,7 +413,7 @@ void Tanemura<K, D>::refresh_ball(const Facet& f) {
   // outcomes depend on which points reach the (inconsistent) predicates, and
   // the pencil ball prunes other points at the rounding level.
   if constexpr (K::exact)
-    ball_ = ball_of(f, best_);
+    ball_ = ball_of(best_);
   else
     ball_ = circumsphere_ball(f, best_);
   ball_stale_ = false;
