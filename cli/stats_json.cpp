@@ -74,6 +74,7 @@ void write_stats_json(std::ostream& out, const StatsRecord& r) {
   j["inserted_points"] = res.inserted_points;
   j["simplices"] = res.simplices.size() / k;
   j["seconds"] = res.seconds;
+  j["cpu_seconds"] = res.cpu_seconds;
   j["peak_rss_bytes"] = r.peak_rss_bytes;
   j["predicates"] = counters(res.predicates);
   j["counters"] = counters(res.counters);

@@ -2,13 +2,14 @@
 // section 5). Keys in this fixed order: algorithm, kernel, policy, order,
 // location (walk or scan; none for dlab flip), seed,
 // dimension, input_points, distinct_points, inserted_points (input points
-// processed before the run stopped: variants/run.hpp), simplices, seconds,
-// peak_rss_bytes (before validation), predicates, counters, snapping, outcome
+// processed before the run stopped: variants/run.hpp), simplices, seconds
+// (wall) and cpu_seconds (the thread's CPU time: steadier on a loaded machine)
+// of the triangulation alone, peak_rss_bytes (before validation), predicates, counters, snapping, outcome
 // (the class of variants/outcome.hpp: ok, lower-dimensional, not-delaunay,
 // invalid, reported), validated (whether the exact validator judged the
-// result), message (the outcome's detail). Everything but `seconds`
-// and `peak_rss_bytes` is a function of the input, the options and the seed,
-// so the file is byte-identical across runs apart from those two values.
+// result), message (the outcome's detail). Everything but `seconds`,
+// `cpu_seconds` and `peak_rss_bytes` is a function of the input, the options
+// and the seed, so the file is byte-identical across runs apart from those.
 #pragma once
 #include <cstdint>
 #include <ostream>
