@@ -88,11 +88,7 @@ int corpus_replay(int argc, char** argv) {
     if (!kernels.empty()) o.kernels = fuzz::parse_list("--kernel", kernels);
     limits.apply(o.limits, o.jobs);
     return fuzz::replay_corpus(o, std::cout, std::cerr);
-  } catch (const io::InputError& e) {
-    return cl.usage_error(e.what());
-  } catch (const UsageError& e) {
-    return cl.usage_error(e.what());
-  } catch (const std::runtime_error& e) {  // a child that broke the line protocol
+  } catch (const std::runtime_error& e) {  // io::InputError, UsageError, a child that broke the line protocol
     return cl.usage_error(e.what());
   }
 }
@@ -117,11 +113,7 @@ int corpus_add(int argc, char** argv) {
   try {
     limits.apply(o.limits, o.jobs);
     return fuzz::add_corpus_case(o, std::cout, std::cerr);
-  } catch (const io::InputError& e) {
-    return cl.usage_error(e.what());
-  } catch (const UsageError& e) {
-    return cl.usage_error(e.what());
-  } catch (const std::runtime_error& e) {  // a child that broke the line protocol
+  } catch (const std::runtime_error& e) {  // io::InputError, UsageError, a child that broke the line protocol
     return cl.usage_error(e.what());
   }
 }
