@@ -67,6 +67,9 @@ struct VtuData {
 };
 std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* simplices,
                      const VtuData& data = {});
+// The XML declaration, VTKFile and UnstructuredGrid openings and the Piece
+// tag of a .vtu with one piece: what every .vtu writer starts with.
+std::string vtu_piece_header(std::size_t points, std::size_t cells);
 std::string off_text(const PointSet& points, const std::vector<std::uint32_t>* simplices);
 // Writes text to path; InputError "PATH: cannot write: reason".
 void write_text_file(const std::string& path, const std::string& text);

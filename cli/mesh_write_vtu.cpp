@@ -28,6 +28,15 @@ std::string data_block(const char* tag, const std::vector<VtuArray>& arrays, std
 
 }  // namespace
 
+std::string vtu_piece_header(std::size_t points, std::size_t cells) {
+  return "<?xml version=\"1.0\"?>\n"
+         "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n"
+         "  <UnstructuredGrid>\n"
+         "    <Piece NumberOfPoints=\"" + std::to_string(points) + "\" NumberOfCells=\"" +
+         std::to_string(cells) + "\">\n";
+}
+
 std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* simplices,
                      const VtuData& data) {
   const std::size_t n = points.size();
@@ -35,13 +44,7 @@ std::string vtu_text(const PointSet& points, const std::vector<std::uint32_t>* s
   const std::size_t cells = simplices ? simplices->size() / k : n;
   const int type = !simplices ? 1 : points.dimension == 2 ? 5 : 10;
   std::string s =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n"
-      "  <UnstructuredGrid>\n"
-      "    <Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfCells=\"" +
-      std::to_string(cells) + "\">\n" +
-      data_block("PointData", data.point, n) + data_block("CellData", data.cell, cells) +
+      vtu_piece_header(n, cells) + data_block("PointData", data.point, n) + data_block("CellData", data.cell, cells) +
       "      <Points>\n"
       "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < n; ++i) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <set>
 
+#include "cli/mesh_formats.hpp"
 #include "cli/numbers.hpp"
 
 namespace dlab::cli {
@@ -58,13 +59,7 @@ std::string voronoi_svg(const voronoi::Diagram<2>& d, const std::vector<Point2>&
 template <int D>
 std::string voronoi_vtu(const voronoi::Diagram<D>& d) {
   const std::size_t n = d.vertices.size(), cells = d.cells.size();
-  std::string s =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n"
-      "  <UnstructuredGrid>\n"
-      "    <Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfCells=\"" +
-      std::to_string(cells) + "\">\n      <PointData>\n";
+  std::string s = io::vtu_piece_header(n, cells) + "      <PointData>\n";
   std::vector<std::int64_t> simplex(n, -1);
   for (std::size_t i = 0; i < d.centres; ++i) simplex[i] = static_cast<std::int64_t>(i);
   array(s, "Int64", "simplex", simplex);
