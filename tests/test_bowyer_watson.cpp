@@ -417,6 +417,28 @@ TEST_CASE("bw: insertion orders are permutations and deterministic", "[bw]") {
     std::sort(a.begin(), a.end());
     for (std::uint32_t i = 0; i < a.size(); ++i) REQUIRE(a[i] == i);
   }
+  // The Hilbert order does not depend on the scale: the same points times
+  // 2^-1073 (subnormals: cells / extent would overflow) and times 2^900 make a
+  // tour as short as the unscaled ones (within rounding at cell edges). It
+  // was random on subnormals once: every point fell in a corner cell.
+  std::vector<Point3> ints(2000);
+  std::mt19937_64 g(5);
+  for (auto& q : ints)
+    for (auto& c : q) c = double(g() % (1u << 20)) - double(1u << 19);
+  auto tour = [&](std::span<const Point3> pts) {
+    const auto order = insertion_order(pts, InsertionOrder::hilbert, 3);
+    double length = 0;  // on the unscaled points
+    for (std::size_t k = 1; k < order.size(); ++k)
+      for (int a = 0; a < 3; ++a) length += std::fabs(ints[order[k]][a] - ints[order[k - 1]][a]);
+    return length;
+  };
+  const double ref = tour(ints);
+  for (int e : {-1073, -1000, 900}) {
+    auto scaled = ints;
+    for (auto& q : scaled)
+      for (auto& c : q) c = std::ldexp(c, e);
+    CHECK(tour(scaled) <= 1.02 * ref);
+  }
   // The Hilbert key of the 2x2 grid visits (0,0), (0,1), (1,1), (1,0) in order.
   std::array<std::uint32_t, 2> c00{0, 0}, c01{0, 1}, c11{1, 1}, c10{1, 0};
   const auto k00 = hilbert_key(c00.data(), 2, 1), k01 = hilbert_key(c01.data(), 2, 1);

@@ -124,11 +124,16 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts) {
   double extent = 0;
   for (int a = 0; a < D; ++a) extent = std::max(extent, hi[a] * 0.5 - lo[a] * 0.5);
   const double cells = double((std::uint64_t(1) << bits) - 1);
-  const double scale = extent > 0 && std::isfinite(extent) ? cells / extent : 0;
+  // cells / extent overflows to infinity when the extent is below
+  // 2^(bits - 1024), e.g. on subnormal input: every point then fell in a corner
+  // cell (an order no better than random). Such extents divide first instead.
+  const bool usable = extent > 0 && std::isfinite(extent);
+  const double scale = usable ? cells / extent : 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     std::uint32_t x[D];
     for (int a = 0; a < D; ++a) {
-      double t = (pts[i][a] * 0.5 - lo[a] * 0.5) * scale;
+      const double offset = pts[i][a] * 0.5 - lo[a] * 0.5;
+      double t = std::isfinite(scale) ? offset * scale : offset / extent * cells;
       if (!(t >= 0)) t = 0;  // NaN-safe
       if (t > cells) t = cells;
       x[a] = static_cast<std::uint32_t>(t);
