@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -15,8 +16,8 @@
 #include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 
-#ifndef DLAB_SOURCE_DIR
-#error "DLAB_SOURCE_DIR (the source tree, for studies/plot/dlab_plot.py) must be defined"
+#if !defined(DLAB_SOURCE_DIR) || !defined(DLAB_PLOT_FROM_BINDIR)
+#error "DLAB_SOURCE_DIR and DLAB_PLOT_FROM_BINDIR (where the script is installed) must be defined"
 #endif
 
 namespace dlab::cli {
@@ -36,8 +37,8 @@ const char* const kPlotDescription =
     "columns are absent or empty is skipped with a notice. DIR/figures.json holds every\n"
     "plotted value. Reruns give identical files.\n"
     "Needs python3 with matplotlib and numpy (Debian: python3-matplotlib); /usr/bin/python3 is\n"
-    "used when it exists. Environment: DLAB_PLOT_SCRIPT overrides the script's path (default\n"
-    "<source dir>/studies/plot/dlab_plot.py).\n";
+    "used when it exists. The script: $DLAB_PLOT_SCRIPT if set, else the copy installed beside\n"
+    "this dlab (PREFIX/share/dlab/plot), else the source tree's studies/plot/dlab_plot.py.\n";
 const char* const kPlotExamples =
     "  dlab study --default --out s1 && dlab plot s1\n"
     "  dlab plot s1 --out figures\n";
@@ -48,18 +49,33 @@ bool is_file(const std::string& path, bool executable) {
          (!executable || ::access(path.c_str(), X_OK) == 0);
 }
 
+// $DLAB_PLOT_SCRIPT; else the copy `cmake --install` puts beside this
+// executable (PREFIX/bin/dlab -> PREFIX/share/dlab/plot/dlab_plot.py); else
+// the source tree's.
+std::string plot_script() {
+  if (const char* env = std::getenv("DLAB_PLOT_SCRIPT"); env && *env) return env;
+  std::string exe(4096, '\0');
+  const ssize_t n = ::readlink("/proc/self/exe", exe.data(), exe.size() - 1);
+  if (n > 0) {
+    exe.resize(static_cast<std::size_t>(n));
+    const std::string installed =
+        (std::filesystem::path(exe).parent_path() / DLAB_PLOT_FROM_BINDIR).lexically_normal().string();
+    if (is_file(installed, false)) return installed;
+  }
+  return std::string(DLAB_SOURCE_DIR) + "/studies/plot/dlab_plot.py";
+}
+
 }  // namespace
 
 int cmd_plot(int argc, char** argv) {
   std::string study, out;
-  CommandLine cl("plot", "usage: dlab plot STUDY_DIR [--out DIR]\n", kPlotDescription, kPlotExamples,
+  CommandLine cl("plot", "usage: dlab plot STUDY_DIR [--out DIR]\n",
+                 kPlotDescription + ("This dlab's script: " + plot_script() + "\n"), kPlotExamples,
                  "Exit status: the script's: 0 drawn, 2 bad usage or an unreadable runs.csv.\n");
   cl.app().add_option("STUDY_DIR", study, "a directory written by dlab study (its runs.csv)")->required();
   cl.app().add_option("--out", out, "where the figures go (default STUDY_DIR/plots)")->type_name("DIR");
   if (auto rc = cl.parse(argc, argv, 2)) return *rc;
-  const char* env = std::getenv("DLAB_PLOT_SCRIPT");
-  const std::string script =
-      env && *env ? env : std::string(DLAB_SOURCE_DIR) + "/studies/plot/dlab_plot.py";
+  const std::string script = plot_script();
   if (!is_file(script, false)) {
     std::cerr << "dlab plot: " << script << ": no such file (set DLAB_PLOT_SCRIPT to "
               << "studies/plot/dlab_plot.py of the source tree)\n";

@@ -18,6 +18,10 @@ cmake --install "$build" --prefix "$prefix" > "$work/install.log"
 [[ -x $prefix/bin/dlab ]] || { echo "FAIL: no $prefix/bin/dlab" >&2; exit 1; }
 "$prefix/bin/dlab" --version > /dev/null
 
+# The installed `dlab plot` runs the script installed beside it, not this tree's.
+grep -qF "script: $prefix/share/dlab/plot/dlab_plot.py" <("$prefix/bin/dlab" plot --help) ||
+  { echo "FAIL: the installed dlab plot does not use $prefix/share/dlab/plot/dlab_plot.py" >&2; exit 1; }
+
 # The consumer sees the prefix only: no package registry, no path of this tree.
 cmake -S "$src/tests/install_consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF > "$work/configure.log" ||
