@@ -151,4 +151,12 @@ CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& tar
   return opt->type_name(names)->default_str(target);
 }
 
+CLI::Option* add_input_format(CLI::App& app, std::string& target, const std::string& input) {
+  return app
+      .add_option("--input-format", target,
+                  "text, node, xyz, off or ply, whatever " + input +
+                      "'s extension (default: by the extension;\nstandard input: text)")
+      ->type_name("FMT");
+}
+
 }  // namespace dlab::cli

@@ -84,5 +84,9 @@ CLI::Option* add_real(CLI::App& app, const std::string& name, double& target,
 // One of choices, else "NAME must be a, b or c, not 'x'" (run_choices.hpp).
 CLI::Option* add_choice(CLI::App& app, const std::string& name, std::string& target,
                         const std::vector<std::string>& choices, const std::string& description);
+// --input-format FMT for the points file named by positional `input` (INPUT,
+// POINTS): io::read_points's format names; an unknown one is reported by the
+// reader, with the choices, as bad input.
+CLI::Option* add_input_format(CLI::App& app, std::string& target, const std::string& input);
 
 }  // namespace dlab::cli

@@ -16,7 +16,7 @@
 namespace dlab::cli {
 
 int cmd_check(int argc, char** argv) {
-  std::string input, simplices_path, orientation = "positive";
+  std::string input, input_format, simplices_path, orientation = "positive";
   CommandLine cl("check", "usage: dlab check INPUT SIMPLICES [--orientation positive|any]\n",
                  "Checks exactly that SIMPLICES is a triangulation of INPUT (every simplex positively\n"
                  "oriented, no overlap, the hull covered, every distinct point a vertex) and that it is\n"
@@ -32,6 +32,7 @@ int cmd_check(int argc, char** argv) {
   app.add_option("SIMPLICES", simplices_path,
                  "the triangulation: d+1 zero-based indices into INPUT per line ('-': standard input)")
       ->required();
+  add_input_format(app, input_format, "INPUT");
   add_choice(app, "--orientation", orientation, {"positive", "any"},
              "any: simplices may also be given negatively oriented (scipy's are mixed); they are\n"
              "reoriented exactly first, and a flat simplex still fails");
@@ -42,7 +43,7 @@ int cmd_check(int argc, char** argv) {
   try {
     if (input == "-" && simplices_path == "-")
       throw UsageError("INPUT and SIMPLICES cannot both be standard input");
-    points = io::read_points(input);
+    points = io::read_points(input, input_format);
     simplices = io::read_simplices(simplices_path, points.dimension, points.size());
   } catch (const UsageError& e) {
     return cl.usage_error(e.what());

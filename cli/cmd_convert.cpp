@@ -44,10 +44,7 @@ int cmd_convert(int argc, char** argv) {
       ->required();
   app.add_option("--format", format, "node, vtu or off, whatever OUT's extension (default: by the extension)")
       ->type_name("FMT");
-  app.add_option("--input-format", input_format,
-                 "text, node, xyz, off or ply, whatever POINTS' extension (default: by the extension;\n"
-                 "standard input: text)")
-      ->type_name("FMT");
+  add_input_format(app, input_format, "POINTS");
   app.add_option("--simplices", simplices_path, "a triangulation of POINTS, written with them")
       ->type_name("SIMPLICES");
   if (auto rc = cl.parse(argc, argv, 2)) return *rc;

@@ -18,7 +18,7 @@
 namespace dlab::cli {
 
 int cmd_draw(int argc, char** argv) {
-  std::string points_path, simplices_path, out_path;
+  std::string points_path, input_format, simplices_path, out_path;
   SvgMeshOptions options;
   CommandLine cl(
       "draw", "usage: dlab draw POINTS SIMPLICES -o FILE.svg|FILE.vtu [--circles] [--labels]\n",
@@ -39,6 +39,7 @@ int cmd_draw(int argc, char** argv) {
   CLI::App& app = cl.app();
   app.add_option("POINTS", points_path, "the points, as dlab triangulate reads them")->required();
   app.add_option("SIMPLICES", simplices_path, "d+1 zero-based indices into POINTS per line")->required();
+  add_input_format(app, input_format, "POINTS");
   app.add_option("-o", out_path, "the picture: .svg (2D) or .vtu (2D or 3D); -: SVG on standard output")
       ->type_name("FILE")->required();
   app.add_flag("--circles", options.circles, "circumcircles of the positively oriented triangles (2D SVG, small inputs)");
@@ -50,7 +51,7 @@ int cmd_draw(int argc, char** argv) {
   try {
     if (points_path == "-" && simplices_path == "-")
       throw UsageError("POINTS and SIMPLICES cannot both be standard input");
-    points = io::read_points(points_path);
+    points = io::read_points(points_path, input_format);
     if (points.dimension == 3 && !as_vtu)
       throw io::InputError(io::display_name(points_path) +
                            ": 3D points: a 3D mesh is drawn as a .vtu file for ParaView: -o FILE.vtu");

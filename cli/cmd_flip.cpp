@@ -72,7 +72,7 @@ void write_out(const std::string& path, const std::vector<std::uint32_t>& s, int
 }  // namespace
 
 int cmd_flip(int argc, char** argv) {
-  std::string input, simplices_path, out_path = "-", stats_path;
+  std::string input, input_format, simplices_path, out_path = "-", stats_path;
   bool make = false;
   std::uint64_t seed = 1, flips = 0;
   RunOptions opt;
@@ -94,6 +94,7 @@ int cmd_flip(int argc, char** argv) {
   CLI::App& app = cl.app();
   app.add_option("INPUT", input, "the points, as dlab triangulate reads them")->required();
   app.add_option("SIMPLICES", simplices_path, "a triangulation of INPUT (not with --make-start)");
+  add_input_format(app, input_format, "INPUT");
   app.add_option("-o", out_path, "the result's simplices (-: standard output)")->type_name("OUT")->capture_default_str();
   app.add_option("--kernel", opt.kernel, "adaptive, integer, mp (exact); float, epsilon (inexact)")
       ->type_name("K")->capture_default_str();
@@ -111,7 +112,7 @@ int cmd_flip(int argc, char** argv) {
   std::size_t distinct = 0;
   std::unique_ptr<std::ofstream> stats;
   try {
-    points = io::read_points(input);
+    points = io::read_points(input, input_format);
     const int dim = points.dimension;
     if (make) {
       const std::vector<std::uint32_t> s = dim == 2 ? non_delaunay_start<2>(points.p2, seed, flips)

@@ -75,10 +75,7 @@ int cmd_triangulate(int argc, char** argv) {
       kOutcomeHelp);
   CLI::App& app = cl.app();
   app.add_option("INPUT", input, "the points")->required();
-  app.add_option("--input-format", input_format,
-                 "text, node, xyz, off or ply, whatever INPUT's extension (default: by the extension;\n"
-                 "standard input: text)")
-      ->type_name("FMT");
+  add_input_format(app, input_format, "INPUT");
   app.add_option("-o", simplex_path,
                  "the simplices, d+1 zero-based indices per line, positively oriented (-: standard output)")
       ->type_name("SIMPLICES")->default_str("-");

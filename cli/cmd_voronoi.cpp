@@ -23,7 +23,7 @@ namespace dlab::cli {
 namespace {
 
 struct VoronoiOptions {
-  std::string points, simplices, out, box;
+  std::string points, input_format, simplices, out, box;
   RunOptions run;
 };
 
@@ -36,6 +36,7 @@ std::optional<int> parse_voronoi_options(int argc, char** argv, VoronoiOptions& 
                  "their Delaunay triangulation (d+1 indices per line, positively oriented),\n"
                  "checked by the exact validator; absent: POINTS is triangulated here");
   app.add_option("-o", o.out, "OUT.svg (2D) or OUT.vtu (2D or 3D)")->required()->type_name("FILE");
+  add_input_format(app, o.input_format, "POINTS");
   app.add_option("--box", o.box,
                  "xmin,ymin,xmax,ymax (2D) or x0,y0,z0,x1,y1,z1 (3D). Default: the sites'\n"
                  "bounding box enlarged by 10 % of its extent on each side (an extent of 0\n"
@@ -163,7 +164,7 @@ int cmd_voronoi(int argc, char** argv) {
     const bool vtu = ends_with(o.out, ".vtu"), svg = ends_with(o.out, ".svg");
     if (!vtu && !svg) throw UsageError("-o must end in .svg or .vtu, not '" + o.out + "'");
     if (o.points == "-" && o.simplices == "-") throw UsageError("POINTS and SIMPLICES cannot both be standard input");
-    points = io::read_points(o.points);
+    points = io::read_points(o.points, o.input_format);
     if (points.dimension == 3 && svg)
       throw io::InputError(io::display_name(o.points) + ": 3D points: the diagram is written as -o OUT.vtu");
     if (!o.simplices.empty()) {

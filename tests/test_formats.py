@@ -249,6 +249,12 @@ same_points(meshio.read(path("v_stdin.vtu")).points, meshio.read(path("v.ply")).
 shutil.copy(path("m3.node"), path("m3_node.dat"))
 dlab("triangulate", "m3_node.dat", "--input-format", "node", "-o", "t3_again.txt")
 same_bytes("t3_again.txt", "t3.txt", "dlab triangulate --input-format node")
+# Every command that reads points takes --input-format (m3_node.dat is a .node file).
+for cmd in (["check", "m3_node.dat", "t3.txt"], ["flip", "m3_node.dat", "t3.txt", "-o", "f3.txt"],
+            ["draw", "m3_node.dat", "t3.txt", "-o", "d3.vtu"], ["voronoi", "m3_node.dat", "t3.txt", "-o", "v3.vtu"]):
+    dlab(*cmd, "--input-format", "node")
+    r = dlab(*cmd, expect=2)  # by its extension: plain text, whose first line has 4 numbers
+    check("m3_node.dat:" in r.stderr, f"dlab {cmd[0]} without --input-format: {r.stderr.strip()}")
 r = dlab("convert", "m2.node", "x.vtu", "--input-format", "text", expect=2)  # its header: 4 numbers
 check("m2.node:1:" in r.stderr, f"--input-format text on a .node file: {r.stderr.strip()}")
 r = dlab("convert", "p2.txt", "x.vtu", "--format", "stl", expect=2)
