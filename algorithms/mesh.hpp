@@ -74,7 +74,7 @@ class Mesh {
     live_ = 0;
   }
   void reserve(std::size_t simplices) {
-    d_.reserve(simplices * 2 * V);
+    d_.reserve(simplices * S);  // S words per simplex (2D: padded to 8)
     mark_.reserve(simplices);
   }
 
