@@ -1,6 +1,7 @@
 // Issue 17, "every certificate is tested at its edges", for the integer-valued
 // certificates. RapidCheck drives the inputs to the edges of each one and
-// compares with MpKernel / perturbed<MpKernel> / exact rationals:
+// compares with GmpKernel / perturbed<GmpKernel> / exact rationals (GMP alone:
+// MpKernel evaluates small integers with the integer kernel's own intdet):
 //  - small-integer evaluation (predicates/small_integer.hpp) and its SoS keys:
 //    reference coordinates at every binade edge from 2^-1074 to 2^1023, both
 //    signs, moved by m 2^-k and by ulps, at +-2^52, +-2^51, +-2^53 and their
@@ -36,8 +37,8 @@ using namespace dlab;
 
 namespace {
 
-const MpKernel mp;
-const perturbed<MpKernel> pmp;
+const GmpKernel mp;  // GMP alone: MpKernel shares intdet with the integer kernel
+const perturbed<GmpKernel> pmp;
 const perturbed<AdaptiveKernel> pad;
 
 // The bounds small_integer.hpp documents, written out here so that a changed

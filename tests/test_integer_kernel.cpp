@@ -461,7 +461,7 @@ TEST_CASE("snap_all fits an unfitted kernel, and keeps a fitted grid", "[integer
 
 TEST_CASE("a default-constructed integer kernel works on integer points", "[integer]") {
   const IntegerKernel k;
-  const MpKernel mp;
+  const GmpKernel mp;  // GMP alone: MpKernel shares intdet with the integer kernel
   CHECK(k.orient2d({0, 0}, {1, 0}, {0, 1}) == Sign::positive);
   CHECK(k.incircle({0, 0}, {1, 0}, {0, 1}, {1, 1}) == Sign::zero);
   CHECK(k.orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -1}) == Sign::positive);
@@ -481,7 +481,7 @@ void agree_with_mp_2d(const std::vector<Point2>& raw, Rng& r, int tuples) {
   std::vector<Point2> s = raw;
   K k2 = k;
   k2.snap_all(s);
-  const MpKernel mp;
+  const GmpKernel mp;  // GMP alone: MpKernel shares intdet with the integer kernel
   const auto n = static_cast<std::int64_t>(raw.size());
   for (int t = 0; t < tuples; ++t) {
     const auto a = r.below(n), b = r.below(n), c = r.below(n), d = r.below(n);
@@ -498,7 +498,7 @@ void agree_with_mp_3d(const std::vector<Point3>& raw, Rng& r, int tuples) {
   std::vector<Point3> s = raw;
   K k2 = k;
   k2.snap_all(s);
-  const MpKernel mp;
+  const GmpKernel mp;  // GMP alone: MpKernel shares intdet with the integer kernel
   const auto n = static_cast<std::int64_t>(raw.size());
   for (int t = 0; t < tuples; ++t) {
     const auto a = r.below(n), b = r.below(n), c = r.below(n), d = r.below(n), e = r.below(n);
@@ -659,7 +659,7 @@ void corners_vs_mp(double lo, double hi) {
   // The corners are the extreme grid points: index span exactly hi - lo.
   for (int j = 0; j < D; ++j) REQUIRE(g.value(g.hi(j)) - g.value(g.lo(j)) == hi - lo);
   for (const auto& p : pts) REQUIRE(k.snap(p) == p);
-  const MpKernel mp;
+  const GmpKernel mp;  // GMP alone: MpKernel shares intdet with the integer kernel
   const std::size_t n = pts.size();
   std::size_t nonzero = 0;
   for (std::size_t a = 0; a < n; ++a)
@@ -708,7 +708,7 @@ TEST_CASE("Kettner et al. 2008 orientation experiment on the snapped points", "[
   const Point2 q{12, 12}, r{24, 24};
   pts.push_back(q);
   pts.push_back(r);
-  const MpKernel mp;
+  const GmpKernel mp;  // GMP alone: MpKernel shares intdet with the integer kernel
   // Returns how many snapped p are collinear with q, r; checks every sign
   // against mp on the same snapped points and against `expected(x, y)`.
   auto run = [&](auto k, auto expected) {
