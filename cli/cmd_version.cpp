@@ -20,7 +20,7 @@ int cmd_version(int argc, char** argv) {
   if (auto rc = cl.parse(argc, argv, 2)) return *rc;
   std::cout << "dlab " << build_info::kVersion << " (delaunay-lab)\n"
             << "commit " << build_info::kCommit
-            << (build_info::kCommitDirty ? " with uncommitted changes" : "") << " (at configure time)\n"
+            << (build_info::kCommitDirty ? " with uncommitted changes" : "") << " (at build time)\n"
             << "compiler " << build_info::kCompiler << ", C++" << __cplusplus / 100 % 100 << ", "
             << build_info::kBuildType << " build\n";
   return 0;
