@@ -61,7 +61,7 @@ bool to_small(const Scaled<D, N>& s, std::array<std::array<std::int64_t, std::si
       }
       const int shift = p.exponent - s.emin;
       const int width = std::bit_width(static_cast<std::uint64_t>(p.mantissa < 0 ? -p.mantissa : p.mantissa));
-      if (shift >= MpKernel::kSmallBits || width + shift > MpKernel::kSmallBits) return false;
+      if (width + shift > MpKernel::kSmallBits) return false;  // |v| >= 2^61
       out[i][j] = p.mantissa * (std::int64_t{1} << shift);
     }
   return true;
