@@ -102,12 +102,6 @@ class Tanemura {
   // (predicates/perturbed.hpp), so that ties are decided consistently and the
   // front stays a triangulation (an arbitrary choice among cospherical
   // candidates could make overlapping simplices in 3D).
-  // Positive iff p is strictly inside the circumsphere of the positive simplex
-  // (f, c). With the sos policy K is perturbed<...> and never answers zero
-  // here; with `strict` an exact zero is broken by the same symbolic walk
-  // (predicates/perturbed.hpp), so that ties are decided consistently and the
-  // front stays a triangulation (an arbitrary choice among cospherical
-  // candidates could make overlapping simplices in 3D).
   Sign inside(const Facet& f, const Point<D>& c, const Point<D>& p) const {
     if constexpr (D == 2) {
       const Point2 &a = pts_[f[0]], &b = pts_[f[1]];
@@ -147,14 +141,13 @@ class Tanemura {
   // their calls on uniform 3D input).
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
   [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
-  Ball circumsphere_ball(const Facet& f, std::uint32_t c) const;
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                          const Ball& ball) const;
   bool point_may_be_in_ball(const Point<D>& p) const;
   // Examines the points of a leaf; then the ball follows the best candidate.
   void scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf);
-  void refresh_ball(const Facet& f);  // ball_ for best_ if it is stale
+  void refresh_ball();  // ball_ for best_ if it is stale
   // Visits the subtree of node k, pruned, the child nearer target_ first;
   // with skip_first_leaves, not the leaves in first_leaves_ (scanned already).
   void visit(const Facet& f, std::uint32_t k, bool skip_first_leaves);
@@ -191,56 +184,9 @@ class Tanemura {
   int near_f_at_ = 0;  // an end of the facet's shortest edge (L1; index in f)
   // counters
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
-                balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0;
+                balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0,
+                hull_examined_ = 0;  // points examined by the searches that found no candidate
 };
-
-template <class K, int D>
-typename Tanemura<K, D>::Ball Tanemura<K, D>::circumsphere_ball(const Facet& f, std::uint32_t c) const {
-  // The circumsphere of (f, c) itself, for inexact kernels (see refresh_ball).
-  Ball b;
-  std::array<std::array<Iv, D>, V> q;
-  for (int j = 0; j < V; ++j) {
-    const Point<D>& p = pts_[j < D ? f[j] : c];
-    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(p[i]);
-  }
-  std::array<std::array<Iv, D>, D> e;
-  std::array<Iv, D> w;
-  for (int j = 0; j < D; ++j) {
-    Iv s{0, 0};
-    for (int i = 0; i < D; ++i) {
-      e[j][i] = q[j + 1][i] - q[0][i];
-      s = s + sq(e[j][i]);
-    }
-    w[j] = s;
-  }
-  std::array<Iv, D> o;  // centre relative to q0: solves 2 e_j . o = w_j
-  if constexpr (D == 2) {
-    const Iv det = e[0][0] * e[1][1] - e[0][1] * e[1][0];
-    const Iv two_det = det + det;
-    o[0] = (w[0] * e[1][1] - w[1] * e[0][1]) / two_det;
-    o[1] = (e[0][0] * w[1] - e[1][0] * w[0]) / two_det;
-  } else {
-    auto cross = [](const std::array<Iv, 3>& u, const std::array<Iv, 3>& v) {
-      return std::array<Iv, 3>{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                               u[0] * v[1] - u[1] * v[0]};
-    };
-    const auto c12 = cross(e[1], e[2]), c20 = cross(e[2], e[0]), c01 = cross(e[0], e[1]);
-    const Iv det = e[0][0] * c12[0] + e[0][1] * c12[1] + e[0][2] * c12[2];
-    const Iv two_det = det + det;
-    for (int i = 0; i < 3; ++i) o[i] = (w[0] * c12[i] + w[1] * c20[i] + w[2] * c01[i]) / two_det;
-  }
-  Iv r2{0, 0};
-  for (int i = 0; i < D; ++i) {
-    b.centre[i] = q[0][i] + o[i];
-    r2 = r2 + sq(o[i]);
-    if (!b.centre[i].bounded()) return b;
-  }
-  if (!r2.bounded()) return b;
-  b.r2 = r2.hi;
-  b.r2_prune = r2.hi * (1 + 0x1p-44) + 0x1p-1000;
-  b.bounded = true;
-  return b;
-}
 
 template <class K, int D>
 void Tanemura<K, D>::make_pencil() {
@@ -399,23 +345,15 @@ void Tanemura<K, D>::scan_leaf(const Facet& f, const typename KdTree<D>::Node& l
       best_ = id;
       ball_stale_ = true;
       ++improvements_;
-      if constexpr (!K::exact) refresh_ball(f);
     }
   }
-  if (!defer_ball_) refresh_ball(f);
+  if (!defer_ball_) refresh_ball();
 }
 
 template <class K, int D>
-void Tanemura<K, D>::refresh_ball(const Facet& f) {
+void Tanemura<K, D>::refresh_ball() {
   if (!ball_stale_) return;
-  // Inexact kernels keep the search of the regression corpus's records
-  // (tests/corpus): the circumsphere itself, after every improvement. Their
-  // outcomes depend on which points reach the (inconsistent) predicates, and
-  // the pencil ball prunes other points at the rounding level.
-  if constexpr (K::exact)
-    ball_ = ball_of(best_);
-  else
-    ball_ = circumsphere_ball(f, best_);
+  ball_ = ball_of(best_);
   ball_stale_ = false;
   ball_valid_ = true;
   ++balls_;
@@ -466,7 +404,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
   // cross product cancels to below its rounding error, and the normal's
   // enclosure then spans zero: no pruning at all (3D near-duplicates).
   base_ = f;
-  if (K::exact) std::rotate(base_.begin(), base_.begin() + near_f_at_, base_.end());
+  std::rotate(base_.begin(), base_.begin() + near_f_at_, base_.end());
   std::array<std::array<Iv, D>, D> q;
   for (int j = 0; j < D; ++j)
     for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[base_[j]][i]);
@@ -502,7 +440,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     if (!seen) visit(f, first_leaves_[j], false);
   }
   defer_ball_ = false;
-  refresh_ball(f);
+  refresh_ball();
   std::uint32_t k = first_leaves_[0];
   while (k != KdTree<D>::root()) {
     visit(f, tree_.sibling(k), true);
@@ -614,6 +552,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     }
     const std::size_t at = table_.find(Table::sorted(f));
     if (at == Table::npos || table_.at(at).state != Table::State::open) continue;  // closed since
+    const std::uint64_t examined_before = examined_;
     const std::uint32_t p = search(f);  // reads the table only
     if (keep_closed_)
       table_.at(at).state = Table::State::closed;
@@ -621,6 +560,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       table_.erase(at);
     if (p == kNone) {
       ++hull_facets_;
+      hull_examined_ += examined_ - examined_before;
       continue;
     }
     ok = add_simplex(f, p);
@@ -655,6 +595,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"facets_closed", closed_},
       {"points_examined", examined_},
       {"points_examined_per_facet_x1000", per_facet_x1000},
+      {"points_examined_hull_facets", hull_examined_},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
       {"balls_computed", balls_},
