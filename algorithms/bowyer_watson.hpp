@@ -11,14 +11,9 @@
 //      O(N^2) in all, Baker ch. 16.2.2; counter scan_tests); a point equal
 //      to a vertex of the simplex found is a duplicate and is merged into that
 //      vertex;
-//   2. cavity: the simplices in conflict with p, grown by adjacency from the
-//      simplex found, marked with a per-insertion stamp; the boundary facets
-//      are recorded while searching.  A finite simplex conflicts iff p is
-//      strictly inside its circumsphere (kernel `incircle`/`insphere`: with the
-//      `sos` policy K is perturbed<...>, which never answers zero, giving the
-//      unique perturbed Delaunay triangulation, CGAL's); a ghost simplex
-//      conflicts by the hull rules of algorithms/oriented.hpp.  With exact
-//      predicates the cavity is then connected and star-shaped from p;
+//   2. cavity: the simplices in conflict with p (algorithms/cavity_search.hpp;
+//      with the `sos` policy K is perturbed<...>, which never answers zero,
+//      giving the unique perturbed Delaunay triangulation, CGAL's);
 //   3. re-star: connect p to every boundary facet (algorithms/cavity.hpp).
 //
 // The simplex containing p is always in the cavity (p inside the closed
@@ -38,6 +33,7 @@
 
 #include "algorithms/cavity.hpp"
 #include "algorithms/cavity_histogram.hpp"
+#include "algorithms/cavity_search.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/locate.hpp"
 #include "algorithms/mesh.hpp"
@@ -69,7 +65,6 @@ class BowyerWatson {
 
  private:
   bool insert(std::uint32_t i);  // false: failure (message_ set)
-  bool conflict(std::uint32_t t, const Point<D>& p) const;
   bool new_simplex_positive(const BoundaryRecord<D>& r) const;
   void fail(std::string msg) { message_ = std::move(msg); }
 
@@ -90,22 +85,6 @@ class BowyerWatson {
                 duplicates_ = 0, boundary_max_ = 0;
   CavityHistogram cavity_sizes_;
 };
-
-template <class K, int D>
-bool BowyerWatson<K, D>::conflict(std::uint32_t t, const Point<D>& p) const {
-  const std::uint32_t* w = mesh_.vertices(t);
-  if constexpr (D == 2) {
-    if (w[2] == kGhost) return ghost_conflict(k_, pts_[w[0]], pts_[w[1]], p);
-    return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], p) == Sign::positive;
-  } else {
-    if (w[3] == kGhost) {
-      const std::uint32_t enc = mesh_.neighbour(t, 3);
-      const std::uint32_t d = mesh_.vertex(Mesh<3>::simplex_of(enc), Mesh<3>::facet_of(enc));
-      return ghost_conflict(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[d], p);
-    }
-    return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[w[3]], p) == Sign::positive;
-  }
-}
 
 template <class K, int D>
 bool BowyerWatson<K, D>::new_simplex_positive(const BoundaryRecord<D>& r) const {
@@ -147,41 +126,14 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     }
   }
 
-  // Cavity search (breadth-first over cavity_ itself).
+  // Cavity search (algorithms/cavity_search.hpp).
   if (stamp_ >= 0xFFFFFFF0u) {
     for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
     stamp_ = 0;
   }
   stamp_ += 2;
-  const std::uint32_t in = stamp_, out = stamp_ + 1;
-  cavity_.clear();
-  records_.clear();
-  mesh_.set_mark(loc.simplex, in);
-  cavity_.push_back(loc.simplex);
-  for (std::size_t c = 0; c < cavity_.size(); ++c) {
-    const std::uint32_t s = cavity_[c];
-    for (int f = 0; f < V; ++f) {
-      const std::uint32_t enc = mesh_.neighbour(s, f);
-      const std::uint32_t t = Mesh<D>::simplex_of(enc);
-      const std::uint32_t m = mesh_.mark(t);
-      if (m == in) continue;
-      if (m != out) {
-        if (conflict(t, p)) {
-          mesh_.set_mark(t, in);
-          cavity_.push_back(t);
-          continue;
-        }
-        mesh_.set_mark(t, out);
-      }
-      BoundaryRecord<D> r;
-      const std::uint32_t* w = mesh_.vertices(s);
-      for (int j = 0; j < V; ++j) r.v[j] = w[j];
-      r.v[f] = i;
-      r.outside = enc;
-      r.slot = f;
-      records_.push_back(r);
-    }
-  }
+  NoGuard whole_mesh;
+  search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, whole_mesh);
   cavity_total_ += cavity_.size();
   cavity_max_ = std::max<std::uint64_t>(cavity_max_, cavity_.size());
   cavity_sizes_.add(cavity_.size());

@@ -52,7 +52,11 @@ class Restar {
   // possibly inconsistent) when the boundary is not a closed manifold.
   // `verify` re-checks that every new adjacency is mutual (for inexact
   // kernels, whose cavities can be anything).
-  std::uint32_t star(Mesh<D>& m, const std::vector<std::uint32_t>& cavity,
+  //
+  // M is Mesh<D> or a view of it with the same members that takes new slots
+  // from elsewhere (the parallel Bowyer–Watson's WorkerSlots).
+  template <class M>
+  std::uint32_t star(M& m, const std::vector<std::uint32_t>& cavity,
                      const std::vector<BoundaryRecord<D>>& records, std::string& error,
                      bool verify = false) {
     // A cavity without boundary is the whole triangulation, ghosts included:
@@ -109,7 +113,8 @@ class Restar {
   // 2D, small cavities: the boundary is one cycle.  New triangle r is
   // (p, u_r, w_r) counterclockwise, with u_r, w_r the vertices after p's slot;
   // its edge (w_r, p) (opposite u_r) is shared with the triangle whose u is w_r.
-  bool link_cycle(Mesh<D>& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+  template <class M>
+  bool link_cycle(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
     // A 64-entry open-addressing table u -> record, marked by a stamp (k <= 32
     // keys: load <= 1/2).
     if (++cycle_stamp_ == 0) {
@@ -177,7 +182,8 @@ class Restar {
   // reversed, so its partner is read at table[b][a]: no search, no branch
   // on the data.  The stamp catches a partner that was never written.
   // Returns false with an empty error when the cavity is too large.
-  bool link_local(Mesh<D>& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+  template <class M>
+  bool link_local(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
     if (++local_stamp_ >= (1u << 26)) {  // the stamp lives in 26 bits of loc_
       std::fill(loc_.begin(), loc_.end(), 0u);
       for (auto& e : pair_) e.stamp = 0;
@@ -249,7 +255,8 @@ class Restar {
     return true;
   }
 
-  bool link_hashed(Mesh<D>& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+  template <class M>
+  bool link_hashed(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
     const std::size_t inserts = records.size() * D;  // facet registrations
     if (table_.size() < 2 * inserts) {
       std::size_t size = 64;

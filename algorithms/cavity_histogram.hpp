@@ -21,6 +21,10 @@ class CavityHistogram {
     ++counts_[b < kBuckets ? b : kBuckets - 1];
   }
 
+  void add(const CavityHistogram& other) {
+    for (int b = 0; b < kBuckets; ++b) counts_[b] += other.counts_[b];
+  }
+
   // "cavity_size_1", "cavity_size_2_3", ..., "cavity_size_64_up".
   static std::string name(int b) {
     const std::uint64_t lo = std::uint64_t{1} << b;

@@ -15,6 +15,10 @@
 // so hitting the bound is a bug there; with an inexact kernel it means the
 // signs were inconsistent and the caller reports a failure.
 //
+// A guard (algorithms/simplex_guard.hpp) is asked for every simplex before
+// the walk reads it; a refusal ends the walk with End::blocked (the parallel
+// Bowyer-Watson's locks: the point is retried later).  NoGuard never refuses.
+//
 // scan_locate is the alternative without any location structure: test every
 // live simplex in storage order until one contains p (or, a ghost, sees p
 // strictly beyond its finite facet).  This is what a Bowyer-Watson without a
@@ -29,11 +33,12 @@
 
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
+#include "algorithms/simplex_guard.hpp"
 
 namespace dlab {
 
 struct Located {
-  enum class End : unsigned char { inside, outside, step_bound, not_found } end = End::inside;
+  enum class End : unsigned char { inside, outside, step_bound, not_found, blocked } end = End::inside;
   std::uint32_t simplex = 0;  // finite simplex containing p (inside), conflicting ghost (outside)
   std::uint32_t steps = 0;    // simplices crossed (walk)
   std::uint64_t tests = 0;    // simplices tested (scan)
@@ -61,13 +66,19 @@ Sign orient_with(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_
     return orient_pos(k, at(0), at(1), at(2), at(3));
 }
 
-template <class K, int D>
+template <class K, int D, class Guard = NoGuard>
 Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t start,
-                        const Point<D>& p, std::uint64_t max_steps, WalkRng& rng) {
+                        const Point<D>& p, std::uint64_t max_steps, WalkRng& rng, Guard&& guard = Guard{}) {
   constexpr int V = D + 1;
   Located r;
   std::uint32_t s = start;
   int from = -1;  // facet of s through which the walk entered
+  auto blocked = [&] {
+    r.end = Located::End::blocked;
+    r.simplex = s;
+    return r;
+  };
+  if (!guard.acquire(s)) return blocked();
   if (m.is_ghost(s)) {
     if (orient_with<K, D>(k, m, pts, s, D, p) == Sign::positive) {
       r.end = Located::End::outside;
@@ -78,6 +89,7 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
     s = Mesh<D>::simplex_of(enc);
     from = Mesh<D>::facet_of(enc);
     ++r.steps;
+    if (!guard.acquire(s)) return blocked();
   }
   for (;;) {
   next_simplex:
@@ -97,6 +109,7 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
         s = Mesh<D>::simplex_of(enc);
         from = Mesh<D>::facet_of(enc);
         ++r.steps;
+        if (!guard.acquire(s)) return blocked();
         if (m.is_ghost(s)) {
           // Entered through the finite facet (the only facet a ghost shares
           // with a finite simplex), with p strictly beyond it.

@@ -132,6 +132,18 @@ class Mesh {
     --live_;
   }
 
+  // n more slots, deleted and on no free list: a reserve that a caller hands
+  // out itself (the parallel Bowyer–Watson's workers; they count what they
+  // create and destroy there and report it with adjust_live).
+  std::uint32_t add_reserve(std::size_t n) {
+    const std::uint32_t first = slots();
+    d_.resize(d_.size() + n * S, kNoNeighbour);
+    mark_.resize(mark_.size() + n, 0);
+    for (std::uint32_t s = first; s < slots(); ++s) d_[std::size_t(s) * S] = kDead;
+    return first;
+  }
+  void adjust_live(std::int64_t delta) { live_ = static_cast<std::uint32_t>(std::int64_t(live_) + delta); }
+
   // Overwrite the vertices of a live slot (re-using a cavity slot in place).
   void assign(std::uint32_t s, const std::uint32_t* verts) { std::copy_n(verts, V, vertices(s)); }
 

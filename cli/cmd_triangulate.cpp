@@ -1,8 +1,9 @@
 // `dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]
 //   [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]
 //   [--points-out FILE [--decimal]] [--stats FILE.json]
-//   [--exact-sphere] [--enclosing-box] [--validate]` (the first two of the last
-// three: --algo george only) (design.md section 5). Calls dlab::run() and
+//   [--exact-sphere] [--enclosing-box] [--validate] [--threads T] [--canonical]`
+// (--exact-sphere and --enclosing-box: --algo george only; --threads:
+// bowyer-watson with an exact kernel) (design.md section 5). Calls dlab::run() and
 // classifies the result (variants/outcome.hpp): the exact validator judges
 // every result that the pair does not promise to be Delaunay (inexact kernels,
 // George's floating sphere and enclosing box), and, with --validate, every
@@ -61,7 +62,7 @@ int cmd_triangulate(int argc, char** argv) {
       "usage: dlab triangulate INPUT [-o SIMPLICES] [--algo A] [--kernel K] [--policy sos|strict]\n"
       "         [--order input|random|brio|hilbert] [--location walk|scan] [--seed N]\n"
       "         [--points-out FILE [--decimal]] [--stats FILE.json] [--validate] [--input-format FMT]\n"
-      "         [--exact-sphere] [--enclosing-box]\n",
+      "         [--exact-sphere] [--enclosing-box] [--threads T] [--canonical]\n",
       "Triangulates INPUT with one algorithm x kernel pair and classifies the result: the exact\n"
       "validator judges every result the pair does not promise to be Delaunay (inexact kernels,\n"
       "George's floating sphere or box) and, with --validate, every result. Points the integer\n"
@@ -71,7 +72,8 @@ int cmd_triangulate(int argc, char** argv) {
       "  dlab gen uniform --n 1000 --seed 1 > p.txt\n"
       "  dlab triangulate p.txt -o t.txt --stats s.json\n"
       "  dlab triangulate p.txt --algo lawson --kernel float --validate -o t.txt\n"
-      "  dlab triangulate p.txt --algo george --exact-sphere --order hilbert --seed 7\n",
+      "  dlab triangulate p.txt --algo george --exact-sphere --order hilbert --seed 7\n"
+      "  dlab triangulate p.txt --threads 4 -o t.txt     # same bytes as --canonical, any T\n",
       kOutcomeHelp);
   CLI::App& app = cl.app();
   app.add_option("INPUT", input, "the points")->required();
@@ -103,6 +105,13 @@ int cmd_triangulate(int argc, char** argv) {
                "peak_rss_bytes)");
   app.add_flag("--exact-sphere", opt.exact_sphere, "george: exact circumsphere test instead of George's floating one");
   app.add_flag("--enclosing-box", opt.enclosing_box, "george: the paper's enclosing box instead of a ghost vertex");
+  add_unsigned(app, "--threads", opt.threads, 255,
+               "bowyer-watson on T threads (oneTBB; exact kernels; 0: the serial algorithm): the same\n"
+               "simplices for every T and schedule, in canonical order (as --canonical); the work\n"
+               "counters vary")->type_name("T");
+  app.add_flag("--canonical", opt.canonical,
+               "simplices in canonical order: each starts at its smallest index (an even permutation),\n"
+               "the lines sorted; equal triangulations give equal files, whatever the algorithm");
   if (auto rc = cl.parse(argc, argv, 2)) return *rc;
   if (opt.policy.empty()) opt.policy = kernel_is_exact(opt.kernel) ? "sos" : "strict";
 

@@ -57,6 +57,16 @@ struct counted {
   counted(const K& k, std::shared_ptr<PredicateCounters> shared)
       : base(k), stats(std::move(shared)) {}
 
+  // One thread's copy, counting into counters of its own; add_counts sums them
+  // back once the threads are done (algorithms/parallel_bowyer_watson.hpp).
+  counted with_own_counters() const { return counted(base, std::make_shared<PredicateCounters>()); }
+  void add_counts(const counted& other) const {
+    for (int p = 0; p < PredicateCounters::predicates; ++p) {
+      stats->calls[p] += other.stats->calls[p];
+      for (int s = 0; s < PredicateCounters::max_stages; ++s) stats->stage[p][s] += other.stats->stage[p][s];
+    }
+  }
+
   // ---- predicates ----
   Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const
     requires Kernel2<K>

@@ -103,7 +103,8 @@ py::array_t<std::int32_t> simplex_array(const std::vector<std::uint32_t>& s, int
 // command's keys, order and values.
 py::tuple triangulate(const py::handle& points, const std::string& algo, const std::string& kernel,
                       const std::optional<std::string>& policy, const std::string& order,
-                      std::uint64_t seed, const std::string& location, bool validate) {
+                      std::uint64_t seed, const std::string& location, bool validate, unsigned threads,
+                      bool canonical) {
   const PointSet ps = point_set(points);
   dlab::RunOptions opt;
   opt.algorithm = algo;
@@ -112,6 +113,8 @@ py::tuple triangulate(const py::handle& points, const std::string& algo, const s
   opt.order = order;
   opt.location = location;
   opt.seed = seed;
+  opt.threads = threads;
+  opt.canonical = canonical;
   // The command line's check of the names before run() (cli/run_choices.hpp; the
   // tests compare the messages with the command's).
   try {
@@ -313,6 +316,7 @@ PYBIND11_MODULE(dlab, m) {
   m.def("triangulate", &triangulate, py::arg("points"), py::arg("algo") = "bowyer-watson",
         py::arg("kernel") = "adaptive", py::arg("policy") = py::none(), py::arg("order") = "brio",
         py::arg("seed") = 0, py::arg("location") = "walk", py::arg("validate") = false,
+        py::arg("threads") = 0, py::arg("canonical") = false,
         "(simplices int32 (m, d+1), stats dict with the keys of `dlab triangulate --stats`)");
   m.def("check", &check, py::arg("points"), py::arg("simplices"), py::arg("orientation") = "positive",
         "The exact validator's verdict (`dlab check`); orientation='any' accepts either orientation.");

@@ -63,12 +63,17 @@ TEST_CASE("every counter emitted by any algorithm x kernel x policy has a column
       for (const auto& algo : all_algorithms())
         for (const auto& kernel : kernel_names())
           for (const char* policy : {"sos", "strict"})
-            for (const auto& location : locations) {
+            for (const auto& location : locations)
+            for (unsigned threads : {0u, 2u}) {  // 2: the parallel bowyer-watson
               const fuzz::Pair pair = fuzz::make_pair(algo, kernel);
               if (location != "walk" && !location_is_selectable(pair.algorithm)) continue;
+              if (threads > 0 && (algo != "bowyer-watson" || !kernel_is_exact(kernel) || location != "walk" ||
+                                  std::string(policy) != "sos"))
+                continue;
               RunOptions o = pair.options(1);
               o.policy = policy;
               o.location = location;
+              o.threads = threads;
               RunResult r;
               try {
                 r = run(ps, o);

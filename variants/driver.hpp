@@ -38,6 +38,7 @@
 #include "predicates/counted.hpp"
 #include "predicates/kernel.hpp"
 #include "predicates/perturbed.hpp"
+#include "variants/canonical_order.hpp"
 #include "variants/insertion_order.hpp"
 #include "variants/run.hpp"
 
@@ -47,6 +48,10 @@ namespace dlab {
 // An algorithm whose point location can be chosen (algorithms/locate.hpp).
 template <class A>
 concept HasLocationScheme = requires(A& a) { a.set_location(LocationScheme::walk); };
+
+// An algorithm that runs on several threads (algorithms/parallel_bowyer_watson.hpp).
+template <class A>
+concept HasThreads = requires(A& a) { a.set_threads(1u); };
 
 // RunOptions::location by name.
 inline LocationScheme location_scheme(std::string_view name) {
@@ -85,6 +90,7 @@ void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& 
 
   Algo<K, D> algo(k);
   if constexpr (HasLocationScheme<Algo<K, D>>) algo.set_location(location_scheme(o.location));
+  if constexpr (HasThreads<Algo<K, D>>) algo.set_threads(o.threads);
   TriangulationResult t = algo.run(std::span<const Point<D>>(seq));
 
   r.outcome = t.outcome;
@@ -106,6 +112,7 @@ void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& 
     r.distinct_points = t.outcome == RunResult::Outcome::ok ? distinct : count_distinct<D>(pts);
     r.simplices = std::move(t.simplices);
     for (std::uint32_t& v : r.simplices) v = rep[v];
+    if (o.canonical || o.threads > 0) sort_canonically(r.simplices, D, o.threads);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.cpu_seconds = thread_cpu_seconds() - cpu0;

@@ -29,6 +29,9 @@ RunResult run_tanemura_integer(const PointSet&, const RunOptions&);
 RunResult run_tanemura_mp(const PointSet&, const RunOptions&);
 RunResult run_tanemura_float(const PointSet&, const RunOptions&);
 RunResult run_tanemura_epsilon(const PointSet&, const RunOptions&);
+RunResult run_parallel_bowyer_watson_adaptive(const PointSet&, const RunOptions&);
+RunResult run_parallel_bowyer_watson_integer(const PointSet&, const RunOptions&);
+RunResult run_parallel_bowyer_watson_mp(const PointSet&, const RunOptions&);
 
 namespace {
 
@@ -59,6 +62,13 @@ const Entry kEntries[] = {
     {"tanemura", "mp", &run_tanemura_mp},
     {"tanemura", "float", &run_tanemura_float},
     {"tanemura", "epsilon", &run_tanemura_epsilon},
+};
+
+// --threads T: the parallel Bowyer–Watson (exact kernels only).
+const Entry kParallelEntries[] = {
+    {"bowyer-watson", "adaptive", &run_parallel_bowyer_watson_adaptive},
+    {"bowyer-watson", "integer", &run_parallel_bowyer_watson_integer},
+    {"bowyer-watson", "mp", &run_parallel_bowyer_watson_mp},
 };
 
 const char* const kKernels[] = {"adaptive", "integer", "mp", "float", "epsilon"};
@@ -97,6 +107,20 @@ RunResult run(const PointSet& points, const RunOptions& options) {
     check_points<3>(points.p3);
   else
     throw UsageError("dimension must be 2 or 3, not " + std::to_string(points.dimension));
+  if (options.threads > 0) {
+    if (options.algorithm != "bowyer-watson")
+      throw UsageError("--threads is an option of --algo bowyer-watson only");
+    if (!kernel_is_exact(options.kernel))
+      throw UsageError("--threads needs an exact kernel (adaptive, integer or mp): with inexact predicates "
+                       "the result would depend on the threads' schedule");
+    if (options.policy != "sos")
+      throw UsageError("--threads needs --policy sos: without the perturbation a degenerate input has several "
+                       "Delaunay triangulations, and the schedule would choose among them");
+    if (options.location != "walk") throw UsageError("--threads needs --location walk");
+    if (options.threads > 255) throw UsageError("--threads must be in 1..255");
+    for (const Entry& e : kParallelEntries)
+      if (options.kernel == e.kernel) return e.run(points, options);
+  }
   for (const Entry& e : kEntries)
     if (options.algorithm == e.algorithm && options.kernel == e.kernel) return e.run(points, options);
   throw UsageError("algorithm '" + options.algorithm + "' is not available with kernel '" +

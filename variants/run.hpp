@@ -59,6 +59,14 @@ struct RunOptions {
   // tested in storage order; bowyer-watson and lawson only).
   std::string location = "walk";
   std::uint64_t seed = 0;
+  // 0: the algorithm as it is; T >= 1: bowyer-watson's parallel variant with T
+  // workers (algorithms/parallel_bowyer_watson.hpp; exact kernels, sos), whose
+  // simplices are written in canonical order.
+  unsigned threads = 0;
+  // Simplices in canonical order (algorithms/canonical_simplices.hpp): each
+  // rotated or permuted evenly to start at its smallest index, the list sorted,
+  // so that equal triangulations are equal files, whatever produced them.
+  bool canonical = false;
   bool exact_sphere = false;   // george: exact circumsphere test (default: stored floating spheres)
   bool enclosing_box = false;  // george: the paper's enclosing box instead of the ghost vertex
 };

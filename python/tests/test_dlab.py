@@ -268,3 +268,21 @@ def test_the_gil_is_released_while_triangulating():
         if stalls[-1] < alone / 2:
             break
     assert min(stalls) < alone / 2, (alone, stalls)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_threads_give_the_serial_canonical_simplices_and_the_commands(tmp_path, dim):
+    # A lattice: degenerate everywhere, so only the perturbation makes the answer unique.
+    pts = dlab.generate("lattice", 3000, dim, 5)
+    serial, _ = dlab.triangulate(pts, canonical=True)
+    for t in (1, 2, 4):
+        simplices, stats = dlab.triangulate(pts, threads=t)
+        assert np.array_equal(simplices, serial) and stats["counters"]["threads"] == t
+    write_points(tmp_path / "p.txt", pts)
+    r = cli("triangulate", str(tmp_path / "p.txt"), "--threads", "2", "-o", str(tmp_path / "s.txt"))
+    assert r.returncode == 0, r.stderr
+    assert np.array_equal(np.loadtxt(tmp_path / "s.txt", dtype=np.int64, ndmin=2), serial)
+    r = cli("triangulate", str(tmp_path / "p.txt"), "--threads", "2", "--algo", "lawson")
+    with pytest.raises(ValueError) as e:
+        dlab.triangulate(pts, threads=2, algo="lawson")
+    assert r.returncode == 2 and str(e.value) == r.stderr.strip().split(": ", 1)[1]

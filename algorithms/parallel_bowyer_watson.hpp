@@ -1,0 +1,504 @@
+// Parallel Bowyer–Watson in 2D and 3D (`dlab triangulate --threads T`).
+//
+// The insertion is algorithms/bowyer_watson.hpp's (walk, cavity search,
+// re-star: the same functions), run by T workers at once on oneTBB
+// (tbb::task_arena, tbb::parallel_for) with the optimistic locking of Marot,
+// Pellerin, Remacle, "One machine, one minute, three billion tetrahedra",
+// IJNME 2019, section 4, re-derived:
+//  - every simplex a worker reads or writes is first locked
+//    (algorithms/simplex_guard.hpp, one byte per slot); a simplex locked by
+//    another worker makes the worker drop its locks and put the point back
+//    (nothing was written yet: writes happen only in the re-star, after the
+//    whole cavity, its boundary and the new slots are locked);
+//  - the points (in the driver's insertion order: BRIO rounds, each sorted along
+//    a Hilbert curve) are inserted in batches that double in size; a batch is
+//    cut into T contiguous runs of that order, which are T regions of space, so
+//    workers rarely meet; the points put back are retried the same way, and when
+//    few remain (or a round makes no progress) one worker inserts them alone;
+//  - the first points are inserted by one worker alone, until the mesh is large
+//    enough for T regions;
+//  - each worker takes new slots from its own free list and from blocks of a
+//    reserve that the mesh grows between rounds, never during one.
+//
+// Why the output does not depend on T or on the schedule: with an exact kernel
+// and the sos policy the Delaunay triangulation of the perturbed points is
+// unique (Edelsbrunner & Mücke 1990), so every insertion order that completes
+// builds the same simplices; the driver writes them in canonical order
+// (algorithms/canonical_simplices.hpp), and merges each group of duplicate
+// points into its first input index whichever copy was inserted.  Only exact
+// kernels are allowed (variants/registry.cpp): with inexact predicates the
+// result would depend on the order, hence on the schedule.  Counters that
+// measure the work (walk steps, deferrals, cavity sizes) do depend on it.
+//
+// Every loop is bounded: a round either inserts a point or falls back to one
+// worker, which inserts every point (with the serial algorithm's bounds and
+// failure messages).
+#pragma once
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include "algorithms/cavity.hpp"
+#include "algorithms/cavity_histogram.hpp"
+#include "algorithms/cavity_search.hpp"
+#include "algorithms/initial_simplex.hpp"
+#include "algorithms/locate.hpp"
+#include "algorithms/mesh.hpp"
+#include "algorithms/simplex_guard.hpp"
+#include "algorithms/triangulation_result.hpp"
+
+namespace dlab {
+
+// New slots for one worker: its own free list (slots its cavities gave up)
+// and blocks claimed from the mesh's reserve.  Each slot is acquired from the
+// worker's guard before it is handed out.  Presents the members of Mesh<D>
+// that Restar::star uses.
+template <int D>
+class WorkerSlots {
+ public:
+  static constexpr std::uint32_t kBlock = 64;
+
+  explicit WorkerSlots(Mesh<D>& m) : m_(m) {}
+
+  // Acquires n slots for the coming re-star.  False: the reserve ran out (the
+  // caller drops its locks, the point waits for the mesh to grow).
+  template <class Guard>
+  bool prepare(std::size_t n, Guard& guard, std::atomic<std::uint32_t>& reserve_next, std::uint32_t reserve_end) {
+    while (ready_.size() < n) {
+      std::uint32_t s;
+      if (!free_.empty()) {
+        s = free_.back();
+        free_.pop_back();
+      } else {
+        if (block_next_ == block_end_) {
+          const std::uint32_t b = reserve_next.fetch_add(kBlock, std::memory_order_relaxed);
+          if (b >= reserve_end) {
+            give_back();
+            return false;
+          }
+          block_next_ = b;
+          block_end_ = std::min(b + kBlock, reserve_end);
+        }
+        s = block_next_++;
+      }
+      if (guard.acquire(s))
+        ready_.push_back(s);
+      else
+        busy_.push_back(s);  // another worker's walk is looking at it: later
+    }
+    for (std::uint32_t s : busy_) free_.push_back(s);
+    busy_.clear();
+    return true;
+  }
+  // After an abandoned insertion: the slots prepared and not used go back.
+  void give_back() {
+    for (std::uint32_t s : ready_) free_.push_back(s);
+    for (std::uint32_t s : busy_) free_.push_back(s);
+    ready_.clear();
+    busy_.clear();
+  }
+  std::int64_t live_delta() const { return live_delta_; }
+
+  // ---- what Restar::star uses ----
+  std::uint32_t create(const std::uint32_t* verts) {
+    const std::uint32_t s = ready_.back();
+    ready_.pop_back();
+    m_.assign(s, verts);
+    ++live_delta_;
+    return s;
+  }
+  void destroy(std::uint32_t s) {
+    m_.vertex(s, 0) = kDead;
+    free_.push_back(s);
+    --live_delta_;
+  }
+  void assign(std::uint32_t s, const std::uint32_t* verts) { m_.assign(s, verts); }
+  void link(std::uint32_t a, std::uint32_t b) { m_.link(a, b); }
+  void set_neighbour(std::uint32_t enc, std::uint32_t other) { m_.set_neighbour(enc, other); }
+  std::uint32_t neighbour_enc(std::uint32_t enc) const { return m_.neighbour_enc(enc); }
+  bool is_ghost(std::uint32_t s) const { return m_.is_ghost(s); }
+  std::uint32_t slots() const { return m_.slots(); }
+
+ private:
+  Mesh<D>& m_;
+  std::vector<std::uint32_t> free_, ready_, busy_;
+  std::uint32_t block_next_ = 0, block_end_ = 0;
+  std::int64_t live_delta_ = 0;
+};
+
+// A copy of the kernel for one thread: counted<> kernels count into counters
+// of their own (predicates/counted.hpp), summed back by add_thread_counts.
+template <class K>
+K thread_kernel(const K& k) {
+  if constexpr (requires { k.with_own_counters(); })
+    return k.with_own_counters();
+  else
+    return k;
+}
+template <class K>
+void add_thread_counts(const K& into, const K& from) {
+  if constexpr (requires { into.add_counts(from); }) into.add_counts(from);
+}
+
+template <class K, int D>
+class ParallelBowyerWatson {
+  static_assert(KernelFor<K, D>);
+  static_assert(K::exact, "the parallel result is schedule-independent only with exact predicates");
+  static constexpr int V = D + 1;
+
+ public:
+  static constexpr unsigned kMaxThreads = 255;  // lock bytes hold 1..255
+
+  explicit ParallelBowyerWatson(const K& k = K{}) : k_(k) {}
+
+  // The kernel sees only the points given to run() (variants/driver.hpp).
+  static constexpr bool kernel_sees_given_points_only = true;
+
+  void set_threads(unsigned t) { threads_ = std::clamp(t, 1u, kMaxThreads); }
+
+  // Triangulates pts (in the order given, T workers at once).  pts must
+  // outlive the call.
+  TriangulationResult run(std::span<const Point<D>> pts);
+
+  const Mesh<D>& mesh() const { return mesh_; }
+  const K& kernel() const { return k_; }
+
+ private:
+  enum class Status : unsigned char { inserted, deferred, failed };
+
+  struct Worker {
+    Worker(const K& kernel, Mesh<D>& m, std::uint8_t owner)
+        : k(thread_kernel(kernel)), guard(nullptr, owner), slots(m) {}
+    K k;
+    LockGuard guard;
+    WorkerSlots<D> slots;
+    Restar<D> restar;
+    std::vector<std::uint32_t> cavity, deferred;
+    std::vector<BoundaryRecord<D>> records;
+    std::uint32_t last = 0;   // where the next walk starts
+    std::uint32_t stamp = 0;  // this worker's stamps: stamp (in), stamp + 1 (out)
+    WalkRng rng;
+    std::string message;
+    std::uint64_t walk_steps = 0, cavity_total = 0, cavity_max = 0, created = 0, duplicates = 0,
+                  boundary_max = 0, deferrals = 0;
+    CavityHistogram cavity_sizes;
+  };
+
+  // Guard: the worker's LockGuard in a parallel round; NoGuard when one
+  // worker runs alone (nobody to exclude: no locking costs).
+  template <class Guard>
+  Status insert(Worker& w, Guard& guard, std::uint32_t i, bool alone);
+  template <class Guard>
+  Status abandon(Worker& w, Guard& guard) {
+    w.slots.give_back();
+    guard.release_all();
+    return Status::deferred;
+  }
+  template <class Guard>
+  bool start_simplex(Worker& w, Guard& guard, std::uint32_t& start, bool alone);
+  void insert_alone(const std::vector<std::uint32_t>& points);
+  void insert_batch(std::vector<std::uint32_t> points);
+  void ensure_reserve(std::size_t slots);
+  void reset_stamps_if_needed(std::uint64_t insertions);
+
+  K k_;
+  Mesh<D> mesh_;
+  const Point<D>* pts_ = nullptr;
+  unsigned threads_ = 1;
+  std::deque<Worker> workers_;  // never moved
+  tbb::task_arena arena_;
+  std::vector<std::uint8_t> locks_;
+  std::atomic<std::uint32_t> reserve_next_{0};
+  std::uint32_t reserve_end_ = 0;
+  std::vector<std::uint32_t> merged_;
+  std::atomic<bool> failed_{false};
+  // Explicit happens-before edges around each parallel round, so that a
+  // race detector that does not see inside oneTBB (ThreadSanitizer) sees them.
+  std::atomic<std::uint32_t> round_started_{0}, workers_done_{0};
+  std::uint64_t rounds_ = 0, alone_insertions_ = 0;
+};
+
+// A live simplex to start the walk from, locked: the worker's last one, or,
+// when another worker has since deleted it, the next live slot (alone: any
+// live slot).  False: none could be locked now; the search resumes there.
+template <class K, int D>
+template <class Guard>
+bool ParallelBowyerWatson<K, D>::start_simplex(Worker& w, Guard& guard, std::uint32_t& start, bool alone) {
+  const std::uint32_t slots = mesh_.slots();
+  std::uint32_t s = w.last < slots ? w.last : 0;
+  const std::uint32_t tries = alone ? slots : 64;
+  for (std::uint32_t t = 0; t < tries; ++t, s = s + 1 < slots ? s + 1 : 0) {
+    if (!guard.acquire(s)) break;
+    if (mesh_.alive(s)) {
+      start = s;
+      return true;
+    }
+  }
+  w.last = s;
+  return false;
+}
+
+template <class K, int D>
+template <class Guard>
+typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(Worker& w, Guard& guard,
+                                                                               std::uint32_t i, bool alone) {
+  const Point<D>& p = pts_[i];
+  std::uint32_t start = 0;
+  if (!start_simplex(w, guard, start, alone)) return abandon(w, guard);
+  // As in the serial algorithm: an exact walk never revisits a simplex.
+  const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
+  const Located loc = visibility_walk<K, D>(w.k, mesh_, pts_, start, p, bound, w.rng, guard);
+  w.walk_steps += loc.steps;
+  if (loc.end == Located::End::blocked) return abandon(w, guard);
+  if (loc.end == Located::End::step_bound) {
+    // Other workers may have changed the mesh under a long walk: only a walk
+    // alone proves a bug.
+    if (!alone) return abandon(w, guard);
+    w.message = "point location exceeded its bound of " + std::to_string(bound) + " steps at insertion #" +
+                std::to_string(i) + " (a bug: the kernel is exact)";
+    return Status::failed;
+  }
+  if (loc.end == Located::End::inside && loc.zeros > 0) {
+    for (int j = 0; j < V; ++j) {
+      const std::uint32_t v = mesh_.vertex(loc.simplex, j);
+      if (v != kGhost && pts_[v] == p) {
+        merged_[i] = v;
+        ++w.duplicates;
+        w.last = loc.simplex;
+        guard.release_all();
+        return Status::inserted;
+      }
+    }
+  }
+  const std::uint32_t step = 2 * threads_;
+  if (w.stamp > 0xFFFFFFFFu - step) return abandon(w, guard);  // run() resets the stamps
+  w.stamp += step;
+  if (!search_cavity<K, D>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records, guard))
+    return abandon(w, guard);
+  const std::size_t extra = w.records.size() > w.cavity.size() ? w.records.size() - w.cavity.size() : 0;
+  if (!w.slots.prepare(extra, guard, reserve_next_, reserve_end_)) return abandon(w, guard);
+
+  w.cavity_total += w.cavity.size();
+  w.cavity_max = std::max<std::uint64_t>(w.cavity_max, w.cavity.size());
+  w.cavity_sizes.add(w.cavity.size());
+  w.boundary_max = std::max<std::uint64_t>(w.boundary_max, w.records.size());
+  w.created += w.records.size();
+  std::string err;
+  const std::uint32_t first = w.restar.star(w.slots, w.cavity, w.records, err);
+  if (!err.empty()) {
+    w.message = "insertion #" + std::to_string(i) + ": " + err + " (a bug: the kernel is exact)";
+    return Status::failed;
+  }
+  merged_[i] = i;
+  w.last = first;
+  guard.release_all();
+  return Status::inserted;
+}
+
+// The mesh holds at least `slots` unclaimed reserve slots (between rounds
+// only).  The reserve is always the mesh's last slots, so it grows in place:
+// blocks the workers claimed stay theirs.
+template <class K, int D>
+void ParallelBowyerWatson<K, D>::ensure_reserve(std::size_t slots) {
+  const std::uint32_t next = std::min(reserve_next_.load(std::memory_order_relaxed), reserve_end_);
+  if (reserve_end_ - next >= slots) return;
+  mesh_.add_reserve(std::max<std::size_t>(slots, mesh_.slots() / 8));
+  reserve_next_.store(next, std::memory_order_relaxed);
+  reserve_end_ = mesh_.slots();
+  locks_.resize(mesh_.slots(), 0);
+  for (Worker& w : workers_) w.guard.rebind(locks_.data());
+}
+
+template <class K, int D>
+void ParallelBowyerWatson<K, D>::reset_stamps_if_needed(std::uint64_t insertions) {
+  const std::uint64_t need = (insertions + 1) * 2 * threads_;
+  bool reset = false;
+  for (const Worker& w : workers_) reset = reset || w.stamp + need > 0xFFFFFFFFull;
+  if (!reset) return;
+  for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
+  for (std::size_t t = 0; t < workers_.size(); ++t) workers_[t].stamp = static_cast<std::uint32_t>(2 * t);
+}
+
+// Worker 0 alone, on the calling thread: every point is inserted (the reserve
+// grows when a cavity needs it) or the run fails.
+template <class K, int D>
+void ParallelBowyerWatson<K, D>::insert_alone(const std::vector<std::uint32_t>& points) {
+  Worker& w = workers_[0];
+  NoGuard alone;
+  for (std::uint32_t i : points) {
+    for (std::size_t room = 256;; room *= 4) {
+      ensure_reserve(room);
+      reset_stamps_if_needed(1);
+      const Status st = insert(w, alone, i, true);
+      if (st == Status::failed) {
+        failed_.store(true, std::memory_order_relaxed);
+        return;
+      }
+      if (st == Status::inserted) break;
+      // Deferred alone: only the reserve (or the stamps) ran out.  A cavity
+      // needs at most one new slot per boundary facet.
+      if (room > 4ull * mesh_.slots() + 4096) {
+        w.message = "insertion #" + std::to_string(i) + " could not be completed (a bug)";
+        failed_.store(true, std::memory_order_relaxed);
+        return;
+      }
+    }
+    ++alone_insertions_;
+  }
+}
+
+// One batch: rounds of T workers on T contiguous runs of `points`, then the
+// remainder alone.
+template <class K, int D>
+void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points) {
+  const std::size_t T = threads_;
+  while (!points.empty() && !failed_.load(std::memory_order_relaxed)) {
+    if (T == 1 || points.size() < 64 * T) {
+      insert_alone(points);
+      return;
+    }
+    // About 6.5 new tetrahedra per point in 3D, 2 triangles in 2D; a worker
+    // that runs out defers its points to the next round.
+    ensure_reserve(points.size() * (D == 3 ? 8 : 3) + T * 2 * WorkerSlots<D>::kBlock);
+    const std::size_t per = (points.size() + T - 1) / T;
+    reset_stamps_if_needed(per);
+    round_started_.fetch_add(1, std::memory_order_release);
+    arena_.execute([&] {
+      tbb::parallel_for(
+          std::size_t{0}, T,
+          [&](std::size_t t) {
+            (void)round_started_.load(std::memory_order_acquire);
+            Worker& w = workers_[t];
+            w.deferred.clear();
+            const std::size_t lo = std::min(points.size(), t * per), hi = std::min(points.size(), lo + per);
+            for (std::size_t j = lo; j < hi; ++j) {
+              if (failed_.load(std::memory_order_relaxed)) {
+                w.deferred.insert(w.deferred.end(), points.begin() + j, points.begin() + hi);
+                break;
+              }
+              const Status st = insert(w, w.guard, points[j], false);
+              if (st == Status::deferred) {
+                w.deferred.push_back(points[j]);
+                ++w.deferrals;
+              } else if (st == Status::failed) {
+                failed_.store(true, std::memory_order_relaxed);
+              }
+            }
+            workers_done_.fetch_add(1, std::memory_order_release);
+          },
+          tbb::static_partitioner());
+    });
+    (void)workers_done_.load(std::memory_order_acquire);
+    ++rounds_;
+    std::vector<std::uint32_t> rest;
+    for (const Worker& w : workers_) rest.insert(rest.end(), w.deferred.begin(), w.deferred.end());
+    if (rest.size() == points.size()) {  // no progress: one worker does the rest
+      insert_alone(rest);
+      return;
+    }
+    points.swap(rest);
+  }
+}
+
+template <class K, int D>
+TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
+  TriangulationResult res;
+  pts_ = pts.data();
+  const std::size_t n = pts.size();
+  merged_.assign(n, kNotProcessed);
+  mesh_.clear();
+
+  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
+  if (!init.found) return res;
+  mesh_.reserve(D == 2 ? 2 * n + 16 : 7 * n + 64);  // as the serial algorithm
+  const std::uint32_t first = build_initial_mesh<D>(mesh_, init.ids);
+  for (std::uint32_t id : init.ids) merged_[id] = id;
+  locks_.assign(mesh_.slots(), 0);
+  reserve_next_.store(mesh_.slots(), std::memory_order_relaxed);
+  reserve_end_ = mesh_.slots();
+
+  workers_.clear();
+  // T threads even on fewer cores (oneTBB would otherwise cap them at the
+  // core count): the result must not depend on it, and tests check that.
+  tbb::global_control threads_allowed(tbb::global_control::max_allowed_parallelism, threads_);
+  if (threads_ > 1 && !arena_.is_active()) arena_.initialize(static_cast<int>(threads_));
+  for (unsigned t = 0; t < threads_; ++t) {
+    workers_.emplace_back(k_, mesh_, static_cast<std::uint8_t>(t + 1));
+    workers_.back().guard.rebind(locks_.data());
+    workers_.back().last = first;
+    workers_.back().stamp = 2 * t;
+  }
+
+  std::vector<std::uint32_t> order;
+  order.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (merged_[i] == kNotProcessed) order.push_back(i);
+  // Alone until the mesh has room for T regions, then batches that double.
+  std::size_t pos = std::min(order.size(), std::size_t{256} * threads_);
+  insert_alone(std::vector<std::uint32_t>(order.begin(), order.begin() + pos));
+  while (pos < order.size() && !failed_.load(std::memory_order_relaxed)) {
+    const std::size_t end = std::min(order.size(), 2 * pos);
+    insert_batch(std::vector<std::uint32_t>(order.begin() + pos, order.begin() + end));
+    pos = end;
+  }
+
+  std::int64_t live = 0;
+  for (Worker& w : workers_) {
+    live += w.slots.live_delta();
+    add_thread_counts(k_, w.k);
+  }
+  mesh_.adjust_live(live);
+  if (failed_.load(std::memory_order_relaxed)) {
+    res.outcome = RunResult::Outcome::failed;
+    for (const Worker& w : workers_)
+      if (res.message.empty()) res.message = w.message;
+  } else {
+    res.simplices.reserve(mesh_.count_finite() * V);
+    mesh_.for_each_finite([&](std::uint32_t s) {
+      for (int j = 0; j < V; ++j) res.simplices.push_back(mesh_.vertex(s, j));
+    });
+  }
+  res.merged_into = merged_;
+
+  std::uint64_t walk = 0, total = 0, cmax = 0, bmax = 0, created = 0, dups = 0, deferrals = 0;
+  CavityHistogram sizes;
+  for (const Worker& w : workers_) {
+    walk += w.walk_steps;
+    total += w.cavity_total;
+    cmax = std::max(cmax, w.cavity_max);
+    bmax = std::max(bmax, w.boundary_max);
+    created += w.created;
+    dups += w.duplicates;
+    deferrals += w.deferrals;
+    sizes.add(w.cavity_sizes);
+  }
+  std::size_t restar_bytes = 0;
+  for (const Worker& w : workers_) restar_bytes += w.restar.bytes_reserved();
+  res.counters = {
+      {"walk_steps", walk},
+      {"cavity_simplices", total},
+      {"max_cavity_simplices", cmax},
+      {"max_cavity_boundary", bmax},
+      {"simplices_created", created},
+      {"duplicates", dups},
+      {"mesh_slots", mesh_.slots()},
+      {"mesh_bytes_reserved", mesh_.bytes_reserved() + locks_.capacity() + restar_bytes},
+      {"threads", threads_},
+      {"parallel_rounds", rounds_},
+      {"deferred_insertions", deferrals},
+      {"insertions_alone", alone_insertions_},
+  };
+  sizes.append_to(res.counters);
+  return res;
+}
+
+}  // namespace dlab
