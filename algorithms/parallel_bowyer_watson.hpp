@@ -366,9 +366,10 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
       insert_alone(points);
       return;
     }
-    // About 6.5 new tetrahedra per point in 3D, 2 triangles in 2D; a worker
-    // that runs out defers its points to the next round.
-    ensure_reserve(points.size() * (D == 3 ? 8 : 3) + T * 2 * WorkerSlots<D>::kBlock);
+    // About 6.75 new tetrahedra per point in 3D, 2 triangles in 2D (the
+    // serial algorithm's reservation); a worker that runs out defers its
+    // points to the next round.
+    ensure_reserve(points.size() * (D == 3 ? 7 : 2) + T * 2 * WorkerSlots<D>::kBlock);
     const std::size_t per = (points.size() + T - 1) / T;
     reset_stamps_if_needed(per);
     round_started_.fetch_add(1, std::memory_order_release);
