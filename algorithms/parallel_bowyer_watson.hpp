@@ -12,9 +12,10 @@
 //    whole cavity, its boundary and the new slots are locked);
 //  - the points (in the driver's insertion order: BRIO rounds, each sorted along
 //    a Hilbert curve) are inserted in batches that double in size; a batch is
-//    cut into T contiguous runs of that order, which are T regions of space, so
-//    workers rarely meet; the points put back are retried the same way, and when
-//    few remain (or a round makes no progress) one worker inserts them alone;
+//    cut into 8T contiguous runs of that order, which are regions of space, so
+//    workers rarely meet, taken by the threads as they come free; the points
+//    put back are retried the same way, and when few remain (or a round makes
+//    no progress) one worker inserts them alone;
 //  - the first points are inserted by one worker alone, until the mesh is large
 //    enough for T regions;
 //  - each worker takes new slots from its own free list and from blocks of a
@@ -42,6 +43,7 @@
 #include <string>
 #include <vector>
 
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -356,7 +358,7 @@ void ParallelBowyerWatson<K, D>::insert_alone(const std::vector<std::uint32_t>& 
   }
 }
 
-// One batch: rounds of T workers on T contiguous runs of `points`, then the
+// One batch: rounds of T workers on contiguous runs of `points`, then the
 // remainder alone.
 template <class K, int D>
 void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points) {
@@ -370,17 +372,22 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
     // serial algorithm's reservation); a worker that runs out defers its
     // points to the next round.
     ensure_reserve(points.size() * (D == 3 ? 7 : 2) + T * 2 * WorkerSlots<D>::kBlock);
-    const std::size_t per = (points.size() + T - 1) / T;
-    reset_stamps_if_needed(per);
+    reset_stamps_if_needed(points.size());
+    for (Worker& w : workers_) w.deferred.clear();
+    // 8 chunks a thread, contiguous runs of the order, taken by whichever
+    // thread is free (oneTBB's work stealing): a region that costs more does
+    // not leave the other threads waiting.  Each thread inserts with the
+    // worker of its arena slot.
+    const std::size_t chunks = std::min(points.size() / 64, 8 * T), per = (points.size() + chunks - 1) / chunks;
     round_started_.fetch_add(1, std::memory_order_release);
     arena_.execute([&] {
       tbb::parallel_for(
-          std::size_t{0}, T,
-          [&](std::size_t t) {
+          tbb::blocked_range<std::size_t>(0, chunks, 1),
+          [&](const tbb::blocked_range<std::size_t>& range) {
             (void)round_started_.load(std::memory_order_acquire);
-            Worker& w = workers_[t];
-            w.deferred.clear();
-            const std::size_t lo = std::min(points.size(), t * per), hi = std::min(points.size(), lo + per);
+            Worker& w = workers_[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
+            const std::size_t lo = std::min(points.size(), range.begin() * per);
+            const std::size_t hi = std::min(points.size(), range.end() * per);
             for (std::size_t j = lo; j < hi; ++j) {
               if (failed_.load(std::memory_order_relaxed)) {
                 w.deferred.insert(w.deferred.end(), points.begin() + j, points.begin() + hi);
@@ -396,7 +403,7 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
             }
             workers_done_.fetch_add(1, std::memory_order_release);
           },
-          tbb::static_partitioner());
+          tbb::simple_partitioner());
     });
     (void)workers_done_.load(std::memory_order_acquire);
     ++rounds_;

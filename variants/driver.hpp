@@ -84,7 +84,7 @@ void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& 
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
   const std::vector<std::uint32_t> order =
-      insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed);
+      insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads);
   std::vector<Point<D>> seq(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) seq[i] = pts[order[i]];
 

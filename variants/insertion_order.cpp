@@ -6,6 +6,10 @@
 #include <cmath>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
 #include "variants/run.hpp"
 
 namespace dlab {
@@ -107,7 +111,7 @@ void shuffle(std::vector<std::uint32_t>& v, std::uint64_t seed) {
 // Hilbert keys over the bounding cube of the points (one scale for every axis,
 // so the curve keeps distances; halves avoid overflow of max - min).
 template <int D>
-std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts) {
+std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts, unsigned threads) {
   // Cells per axis: about 16 per point along each axis (2^(log2(n)/D + 4)),
   // at most 2^24 (2D) / 2^18 (3D).  The key's cost is linear in the bits.
   constexpr int max_bits = D == 2 ? 24 : 18;
@@ -129,16 +133,25 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts) {
   // cell (an order no better than random). Such extents divide first instead.
   const bool usable = extent > 0 && std::isfinite(extent);
   const double scale = usable ? cells / extent : 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    std::uint32_t x[D];
-    for (int a = 0; a < D; ++a) {
-      const double offset = pts[i][a] * 0.5 - lo[a] * 0.5;
-      double t = std::isfinite(scale) ? offset * scale : offset / extent * cells;
-      if (!(t >= 0)) t = 0;  // NaN-safe
-      if (t > cells) t = cells;
-      x[a] = static_cast<std::uint32_t>(t);
+  auto key_range = [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      std::uint32_t x[D];
+      for (int a = 0; a < D; ++a) {
+        const double offset = pts[i][a] * 0.5 - lo[a] * 0.5;
+        double t = std::isfinite(scale) ? offset * scale : offset / extent * cells;
+        if (!(t >= 0)) t = 0;  // NaN-safe
+        if (t > cells) t = cells;
+        x[a] = static_cast<std::uint32_t>(t);
+      }
+      keys[i] = hilbert_key(x, D, bits);
     }
-    keys[i] = hilbert_key(x, D, bits);
+  };
+  if (threads > 1) {
+    tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, threads);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) { key_range(r.begin(), r.end()); });
+  } else {
+    key_range(0, pts.size());
   }
   return keys;
 }
@@ -183,7 +196,7 @@ void sort_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t
 
 template <int D>
 std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOrder order,
-                                      std::uint64_t seed) {
+                                      std::uint64_t seed, unsigned threads) {
   std::vector<std::uint32_t> idx(pts.size());
   for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<std::uint32_t>(i);
   switch (order) {
@@ -193,11 +206,11 @@ std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOr
       shuffle(idx, seed);
       break;
     case InsertionOrder::hilbert:
-      sort_by_key(idx, 0, idx.size(), hilbert_keys<D>(pts));
+      sort_by_key(idx, 0, idx.size(), hilbert_keys<D>(pts, threads));
       break;
     case InsertionOrder::brio: {
       shuffle(idx, seed);
-      const auto keys = hilbert_keys<D>(pts);
+      const auto keys = hilbert_keys<D>(pts, threads);
       // Rounds [0, b_k), [b_k, b_{k-1}), ..., [b_1, n) with b_{j+1} = b_j / 8.
       std::size_t end = idx.size();
       while (end > 0) {
@@ -214,12 +227,12 @@ std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOr
 }  // namespace
 
 std::vector<std::uint32_t> insertion_order(std::span<const Point2> pts, InsertionOrder order,
-                                           std::uint64_t seed) {
-  return order_impl<2>(pts, order, seed);
+                                           std::uint64_t seed, unsigned threads) {
+  return order_impl<2>(pts, order, seed, threads);
 }
 std::vector<std::uint32_t> insertion_order(std::span<const Point3> pts, InsertionOrder order,
-                                           std::uint64_t seed) {
-  return order_impl<3>(pts, order, seed);
+                                           std::uint64_t seed, unsigned threads) {
+  return order_impl<3>(pts, order, seed, threads);
 }
 
 }  // namespace dlab

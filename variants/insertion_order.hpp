@@ -29,10 +29,12 @@ enum class InsertionOrder { input, random, brio, hilbert };
 InsertionOrder parse_insertion_order(std::string_view name);
 
 // A permutation of 0..n-1: position i holds the input index inserted i-th.
+// threads > 1: the Hilbert keys are computed on that many oneTBB threads (for
+// --threads); the permutation is the same for every value.
 std::vector<std::uint32_t> insertion_order(std::span<const Point2> pts, InsertionOrder order,
-                                           std::uint64_t seed);
+                                           std::uint64_t seed, unsigned threads = 1);
 std::vector<std::uint32_t> insertion_order(std::span<const Point3> pts, InsertionOrder order,
-                                           std::uint64_t seed);
+                                           std::uint64_t seed, unsigned threads = 1);
 
 // Hilbert index of grid coordinates x[0..n-1] (each < 2^bits), n * bits <= 64.
 std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits);
