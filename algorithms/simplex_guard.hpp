@@ -39,25 +39,27 @@ class LockGuard {
     if (holder != 0 ||
         !lock.compare_exchange_strong(expected, owner_, std::memory_order_acquire, std::memory_order_relaxed))
       return false;
-    held_.push_back(s);
+    if (held_count_ == held_.size()) held_.resize(2 * held_.size() + 64);  // rare: amortised
+    held_[held_count_++] = s;
     return true;
   }
 
   // Lets every held simplex go; the writes made under the locks become
   // visible to the next owner (release).
   void release_all() {
-    for (std::uint32_t s : held_) std::atomic_ref<std::uint8_t>(locks_[s]).store(0, std::memory_order_release);
-    held_.clear();
+    for (std::size_t i = 0; i < held_count_; ++i)
+      std::atomic_ref<std::uint8_t>(locks_[held_[i]]).store(0, std::memory_order_release);
+    held_count_ = 0;
   }
 
   // The lock array moves when the mesh grows (between parallel rounds).
   void rebind(std::uint8_t* locks) { locks_ = locks; }
-  std::size_t held() const { return held_.size(); }
 
  private:
   std::uint8_t* locks_;
   std::uint8_t owner_;
-  std::vector<std::uint32_t> held_;
+  std::vector<std::uint32_t> held_;  // the first held_count_ entries
+  std::size_t held_count_ = 0;
 };
 
 }  // namespace dlab
