@@ -13,8 +13,9 @@
 // star-shaped from p.
 //
 // Every simplex read is first acquired from the guard
-// (algorithms/simplex_guard.hpp); a refusal ends the search with false and
-// leaves the mesh unchanged but for the stamps of acquired simplices.
+// (algorithms/simplex_guard.hpp), which also keeps the stamps; a refusal ends
+// the search with false and leaves the mesh unchanged but for the stamps of
+// acquired simplices.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -61,7 +62,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
   const Point<D>& p = pts[i];
   cavity.clear();
   records.clear();
-  m.set_mark(start, in);
+  guard.set_mark(m, start, in);
   cavity.push_back(start);
   for (std::size_t c = 0; c < cavity.size(); ++c) {
     const std::uint32_t s = cavity[c];
@@ -69,17 +70,17 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
       const std::uint32_t enc = m.neighbour(s, f);
       const std::uint32_t t = Mesh<D>::simplex_of(enc);
       if (!guard.acquire(t)) return false;
-      const std::uint32_t mk = m.mark(t);
+      const std::uint32_t mk = guard.mark(m, t);
       if (mk == in) continue;
       if (mk != out) {
         const Conflict cf = in_conflict<K, D>(k, m, pts, t, p, guard);
         if (cf == Conflict::refused) return false;
         if (cf == Conflict::yes) {
-          m.set_mark(t, in);
+          guard.set_mark(m, t, in);
           cavity.push_back(t);
           continue;
         }
-        m.set_mark(t, out);
+        guard.set_mark(m, t, out);
       }
       BoundaryRecord<D> r;
       const std::uint32_t* w = m.vertices(s);

@@ -107,6 +107,9 @@ class Mesh {
 
   std::uint32_t mark(std::uint32_t s) const { return mark_[s]; }
   void set_mark(std::uint32_t s, std::uint32_t m) { mark_[s] = m; }
+  // The mark words themselves (algorithms/simplex_guard.hpp's LockGuard keeps
+  // its locks there); valid until the mesh grows.
+  std::uint32_t* marks() { return mark_.data(); }
 
   // A new simplex with the given vertices and unset neighbours; reuses the most
   // recently freed slot first.

@@ -6,7 +6,7 @@
 // Pellerin, Remacle, "One machine, one minute, three billion tetrahedra",
 // IJNME 2019, section 4, re-derived:
 //  - every simplex a worker reads or writes is first locked
-//    (algorithms/simplex_guard.hpp, one byte per slot); a simplex locked by
+//    (algorithms/simplex_guard.hpp: 8 bits of its mark word); a simplex locked by
 //    another worker makes the worker drop its locks and put the point back
 //    (nothing was written yet: writes happen only in the re-star, after the
 //    whole cavity, its boundary and the new slots are locked);
@@ -158,7 +158,7 @@ class ParallelBowyerWatson {
   static constexpr int V = D + 1;
 
  public:
-  static constexpr unsigned kMaxThreads = 255;  // lock bytes hold 1..255
+  static constexpr unsigned kMaxThreads = 255;  // lock ids 1..255 (simplex_guard.hpp)
 
   explicit ParallelBowyerWatson(const K& k = K{}) : k_(k) {}
 
@@ -218,7 +218,6 @@ class ParallelBowyerWatson {
   unsigned threads_ = 1;
   std::deque<Worker> workers_;  // never moved
   tbb::task_arena arena_;
-  std::vector<std::uint8_t> locks_;
   std::atomic<std::uint32_t> reserve_next_{0};
   std::uint32_t reserve_end_ = 0;
   std::vector<std::uint32_t> merged_;
@@ -282,7 +281,7 @@ typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(W
     }
   }
   const std::uint32_t step = 2 * threads_;
-  if (w.stamp > 0xFFFFFFFFu - step) return abandon(w, guard);  // run() resets the stamps
+  if (w.stamp + step + 1 > LockGuard::kStampLimit) return abandon(w, guard);  // the stamps are reset between rounds
   w.stamp += step;
   if (!search_cavity<K, D>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records, guard))
     return abandon(w, guard);
@@ -316,15 +315,17 @@ void ParallelBowyerWatson<K, D>::ensure_reserve(std::size_t slots) {
   mesh_.add_reserve(std::max<std::size_t>(slots, mesh_.slots() / 8));
   reserve_next_.store(next, std::memory_order_relaxed);
   reserve_end_ = mesh_.slots();
-  locks_.resize(mesh_.slots(), 0);
-  for (Worker& w : workers_) w.guard.rebind(locks_.data());
+  for (Worker& w : workers_) w.guard.rebind(mesh_.marks());
 }
 
+// Stamps stay below LockGuard::kStampLimit (the mark word's top bits are the
+// lock): clear every mark, between rounds, when `insertions` more (about 2T
+// stamps each, shared by T workers) might not fit.
 template <class K, int D>
 void ParallelBowyerWatson<K, D>::reset_stamps_if_needed(std::uint64_t insertions) {
-  const std::uint64_t need = (insertions + 1) * 2 * threads_;
+  const std::uint64_t need = 2 * (insertions + 64) + 2 * threads_;
   bool reset = false;
-  for (const Worker& w : workers_) reset = reset || w.stamp + need > 0xFFFFFFFFull;
+  for (const Worker& w : workers_) reset = reset || w.stamp + need > LockGuard::kStampLimit;
   if (!reset) return;
   for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
   for (std::size_t t = 0; t < workers_.size(); ++t) workers_[t].stamp = static_cast<std::uint32_t>(2 * t);
@@ -430,7 +431,6 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   mesh_.reserve(D == 2 ? 2 * n + 16 : 7 * n + 64);  // as the serial algorithm
   const std::uint32_t first = build_initial_mesh<D>(mesh_, init.ids);
   for (std::uint32_t id : init.ids) merged_[id] = id;
-  locks_.assign(mesh_.slots(), 0);
   reserve_next_.store(mesh_.slots(), std::memory_order_relaxed);
   reserve_end_ = mesh_.slots();
 
@@ -441,7 +441,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   if (threads_ > 1 && !arena_.is_active()) arena_.initialize(static_cast<int>(threads_));
   for (unsigned t = 0; t < threads_; ++t) {
     workers_.emplace_back(k_, mesh_, static_cast<std::uint8_t>(t + 1));
-    workers_.back().guard.rebind(locks_.data());
+    workers_.back().guard.rebind(mesh_.marks());
     workers_.back().last = first;
     workers_.back().stamp = 2 * t;
   }
@@ -499,7 +499,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
       {"simplices_created", created},
       {"duplicates", dups},
       {"mesh_slots", mesh_.slots()},
-      {"mesh_bytes_reserved", mesh_.bytes_reserved() + locks_.capacity() + restar_bytes},
+      {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_bytes},
       {"threads", threads_},
       {"parallel_rounds", rounds_},
       {"deferred_insertions", deferrals},

@@ -1,18 +1,26 @@
-// Guards: who may read and write a simplex.  The walk (algorithms/locate.hpp)
-// and the Bowyer–Watson cavity search (algorithms/cavity_search.hpp) ask
-// guard.acquire(s) before they read simplex s and stop when it refuses.
+// Guards: who may read and write a simplex, and where its stamp lives.  The
+// walk (algorithms/locate.hpp) and the Bowyer–Watson cavity search
+// (algorithms/cavity_search.hpp) ask guard.acquire(s) before they read simplex
+// s and stop when it refuses; the search reads and writes stamps through
+// guard.mark / guard.set_mark.
 //
-//  - NoGuard: one thread owns the whole mesh; never refuses (compiles away).
+//  - NoGuard: one thread owns the whole mesh; never refuses (compiles away);
+//    stamps are Mesh::mark.
 //  - LockGuard: the parallel Bowyer–Watson's (algorithms/parallel_bowyer_watson.hpp)
-//    per-simplex locks, one byte per slot holding 0 (free) or the owner's id
-//    (1..255).  A worker takes each simplex it reads or writes with one
-//    compare-and-swap (acquire) and lets all of them go when its insertion ends
-//    or is abandoned (release): every read and write of a simplex's words
-//    happens under its lock, so the mesh arrays themselves need no atomics.
-//    A simplex held by another worker is a refusal, never a wait, so there is
-//    no deadlock; the worker drops its locks and retries the point later
-//    (the optimistic scheme of Marot, Pellerin, Remacle, "One machine, one
-//    minute, three billion tetrahedra", IJNME 2019, section 4).
+//    per-simplex locks, kept in the mesh's mark word itself: its top 8 bits
+//    hold 0 (free) or the owner's id (1..255), its low 24 bits the stamp, so
+//    that taking a simplex touches no cache line the serial search would not
+//    (a separate lock array cost a third line per simplex visited).  A worker
+//    takes each simplex it reads or writes with one compare-and-swap (acquire)
+//    and lets all of them go when its insertion ends or is abandoned
+//    (release): every read and write of a simplex's vertices and neighbours
+//    happens under its lock, so those arrays need no atomics; the mark words,
+//    which other workers test, are only accessed atomically.  A simplex held
+//    by another worker is a refusal, never a wait, so there is no deadlock; the
+//    worker drops its locks and retries the point later (the optimistic scheme
+//    of Marot, Pellerin, Remacle, "One machine, one minute, three billion
+//    tetrahedra", IJNME 2019, section 4).  Stamps must stay below 2^24
+//    (kStampLimit): the parallel algorithm clears the marks before that.
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -23,41 +31,64 @@ namespace dlab {
 struct NoGuard {
   static constexpr bool acquire(std::uint32_t) { return true; }
   static constexpr void release_all() {}
+  template <class M>
+  static std::uint32_t mark(const M& m, std::uint32_t s) {
+    return m.mark(s);
+  }
+  template <class M>
+  static void set_mark(M& m, std::uint32_t s, std::uint32_t stamp) {
+    m.set_mark(s, stamp);
+  }
 };
 
 class LockGuard {
  public:
-  LockGuard(std::uint8_t* locks, std::uint8_t owner) : locks_(locks), owner_(owner) {}
+  static constexpr int kOwnerShift = 24;
+  static constexpr std::uint32_t kStampLimit = (1u << kOwnerShift) - 1;
+
+  LockGuard(std::uint32_t* marks, std::uint8_t owner) : words_(marks), owner_(std::uint32_t(owner) << kOwnerShift) {}
 
   // True when s is held by this guard now (taken now or earlier).  Inlined:
   // a worker asks for every simplex it reads.
   [[gnu::always_inline]] bool acquire(std::uint32_t s) {
-    std::atomic_ref<std::uint8_t> lock(locks_[s]);
-    const std::uint8_t holder = lock.load(std::memory_order_relaxed);
+    std::atomic_ref<std::uint32_t> word(words_[s]);
+    std::uint32_t v = word.load(std::memory_order_relaxed);
+    const std::uint32_t holder = v & ~kStampLimit;
     if (holder == owner_) return true;  // only this owner ever writes its own id
-    std::uint8_t expected = 0;
     if (holder != 0 ||
-        !lock.compare_exchange_strong(expected, owner_, std::memory_order_acquire, std::memory_order_relaxed))
+        !word.compare_exchange_strong(v, v | owner_, std::memory_order_acquire, std::memory_order_relaxed))
       return false;
     if (held_count_ == held_.size()) held_.resize(2 * held_.size() + 64);  // rare: amortised
     held_[held_count_++] = s;
     return true;
   }
 
-  // Lets every held simplex go; the writes made under the locks become
-  // visible to the next owner (release).
+  // The stamp of a held simplex.
+  template <class M>
+  std::uint32_t mark(const M&, std::uint32_t s) const {
+    return std::atomic_ref<std::uint32_t>(words_[s]).load(std::memory_order_relaxed) & kStampLimit;
+  }
+  template <class M>
+  void set_mark(M&, std::uint32_t s, std::uint32_t stamp) {
+    std::atomic_ref<std::uint32_t>(words_[s]).store(owner_ | stamp, std::memory_order_relaxed);
+  }
+
+  // Lets every held simplex go, keeping its stamp; the writes made under the
+  // locks become visible to the next owner (release).
   void release_all() {
-    for (std::size_t i = 0; i < held_count_; ++i)
-      std::atomic_ref<std::uint8_t>(locks_[held_[i]]).store(0, std::memory_order_release);
+    for (std::size_t i = 0; i < held_count_; ++i) {
+      std::atomic_ref<std::uint32_t> word(words_[held_[i]]);
+      word.store(word.load(std::memory_order_relaxed) & kStampLimit, std::memory_order_release);
+    }
     held_count_ = 0;
   }
 
-  // The lock array moves when the mesh grows (between parallel rounds).
-  void rebind(std::uint8_t* locks) { locks_ = locks; }
+  // The mark words move when the mesh grows (between parallel rounds).
+  void rebind(std::uint32_t* marks) { words_ = marks; }
 
  private:
-  std::uint8_t* locks_;
-  std::uint8_t owner_;
+  std::uint32_t* words_;
+  std::uint32_t owner_;              // owner id << kOwnerShift
   std::vector<std::uint32_t> held_;  // the first held_count_ entries
   std::size_t held_count_ = 0;
 };

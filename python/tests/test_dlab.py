@@ -286,3 +286,21 @@ def test_threads_give_the_serial_canonical_simplices_and_the_commands(tmp_path, 
     with pytest.raises(ValueError) as e:
         dlab.triangulate(pts, threads=2, algo="lawson")
     assert r.returncode == 2 and str(e.value) == r.stderr.strip().split(": ", 1)[1]
+
+
+def test_canonical_order_by_an_independent_sort():
+    # Each simplex rotated by an even permutation to start at its smallest index, the
+    # rows sorted: written here in Python, not with the sort under test.
+    def canonical(row):
+        s = [int(v) for v in row]
+        order = sorted(range(len(s)), key=lambda i: s[i])
+        inversions = sum(1 for a in range(len(order)) for b in range(a + 1, len(order)) if order[a] > order[b])
+        c = [s[i] for i in order]
+        if inversions % 2:
+            c[-1], c[-2] = c[-2], c[-1]
+        return tuple(c)
+    for dim in (2, 3):
+        pts = dlab.generate("uniform", 2000, dim, 11)
+        plain, _ = dlab.triangulate(pts)
+        canon, _ = dlab.triangulate(pts, canonical=True)
+        assert [tuple(int(v) for v in r) for r in canon] == sorted(canonical(r) for r in plain)
