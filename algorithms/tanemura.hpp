@@ -29,7 +29,12 @@
 //     Points collinear with a hull edge (coplanar with a hull facet) are
 //     never candidates, so the hull is made of the Delaunay facets of the
 //     points on it, exactly CGAL's hull rule (algorithms/oriented.hpp): a
-//     point between two hull vertices is a vertex.
+//     point between two hull vertices is a vertex. Proving it costs a climb
+//     through every leaf the facet's plane crosses; on a plane full of points
+//     (a lattice's face, oblique to the tree's boxes) that was 450 points per
+//     hull facet (rotated lattice, n = 5000). So, exact kernels only: a facet
+//     whose vertices lie on the plane of a hull facet found before, open on
+//     the same side, is a hull facet at once (on_known_hull_plane).
 //   * Search structure (algorithms/kd_tree.hpp): a kd-tree with boxes. The
 //     search starts at the leaf of the facet's first vertex and climbs to the
 //     root, visiting each sibling subtree on the way, children nearer the
@@ -127,8 +132,13 @@ class Tanemura {
     return s;  // a heuristic only (overflow to inf is harmless)
   }
 
-  std::uint32_t search(const Facet& f);
+  // apex: the vertex of the simplex behind f (kNone for the start facet).
+  std::uint32_t search(const Facet& f, std::uint32_t apex);
   bool add_simplex(const Facet& f, std::uint32_t p);  // false: failure (message_ set)
+  // Exact kernels: whether f lies in the plane of a hull facet found earlier,
+  // with the same open side (then f is a hull facet too: see search).
+  bool on_known_hull_plane(const Facet& f);
+  void record_hull_plane(const Facet& f, std::uint32_t apex);
 
   // ---- search helpers (scaled coordinates, enclosures) ----
   struct Ball {
@@ -157,7 +167,20 @@ class Tanemura {
   const Point<D>* pts_ = nullptr;
   KdTree<D> tree_;
   Table table_;
-  std::vector<Facet> queue_;
+  struct Queued {
+    Facet f;
+    std::uint32_t apex;  // the vertex of the simplex behind f
+  };
+  std::vector<Queued> queue_;
+  // Hull planes (exact kernels): a hull facet and the apex of the simplex
+  // behind it (strictly on its closed side); plane_of_[v]: the last one with
+  // vertex v, or kNone.
+  struct HullPlane {
+    Facet f;
+    std::uint32_t inner;
+  };
+  std::vector<HullPlane> hull_planes_;
+  std::vector<std::uint32_t> plane_of_;
   std::vector<std::uint32_t> out_;
   std::string message_;
   bool keep_closed_ = !K::exact;
@@ -185,7 +208,8 @@ class Tanemura {
   // counters
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
                 balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0,
-                hull_examined_ = 0;  // points examined by the searches that found no candidate
+                hull_examined_ = 0,  // points examined by the searches that found no candidate
+                hull_by_plane_ = 0;  // hull facets settled by a known hull plane (no climb)
 };
 
 template <class K, int D>
@@ -389,7 +413,39 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leav
 }
 
 template <class K, int D>
-std::uint32_t Tanemura<K, D>::search(const Facet& f) {
+bool Tanemura<K, D>::on_known_hull_plane(const Facet& f) {
+  // A hull facet h has no point strictly on its open side (exact search). If
+  // every vertex of f lies on h's plane (exact orient = 0) and h's inner
+  // point (the apex behind h, strictly on its closed side) is strictly on
+  // f's closed side, f's open half-space is h's: f has no candidate either.
+  for (int j = 0; j < D; ++j) {
+    const std::uint32_t h = plane_of_[f[j]];
+    if (h == kNone) continue;
+    bool seen = false;
+    for (int i = 0; i < j; ++i) seen |= plane_of_[f[i]] == h;
+    if (seen) continue;
+    const HullPlane& hp = hull_planes_[h];
+    bool coplanar = true;
+    for (int i = 0; i < D && coplanar; ++i) {
+      bool shared = false;
+      for (int m = 0; m < D; ++m) shared |= hp.f[m] == f[i];
+      if (!shared) coplanar = orient(hp.f, pts_[f[i]]) == Sign::zero;
+    }
+    if (coplanar && orient(f, pts_[hp.inner]) == Sign::negative) return true;
+  }
+  return false;
+}
+
+template <class K, int D>
+void Tanemura<K, D>::record_hull_plane(const Facet& f, std::uint32_t apex) {
+  if (apex == kNone) return;
+  const auto h = static_cast<std::uint32_t>(hull_planes_.size());
+  hull_planes_.push_back({f, apex});
+  for (int j = 0; j < D; ++j) plane_of_[f[j]] = h;
+}
+
+template <class K, int D>
+std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   ++searches_;
   best_ = kNone;
   double near_f = std::numeric_limits<double>::infinity();
@@ -440,6 +496,17 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     if (!seen) visit(f, first_leaves_[j], false);
   }
   defer_ball_ = false;
+  // No candidate near f: f may be a hull facet. On a hull plane found before
+  // (a lattice's face: all its points are coplanar, so the climb would visit
+  // every leaf that the plane crosses), f is one: exact kernels only (an
+  // inexact kernel's hull facet is no proof).
+  (void)apex;
+  if constexpr (K::exact) {
+    if (best_ == kNone && on_known_hull_plane(f)) {
+      ++hull_by_plane_;
+      return kNone;
+    }
+  }
   refresh_ball();
   std::uint32_t k = first_leaves_[0];
   while (k != KdTree<D>::root()) {
@@ -471,7 +538,7 @@ bool Tanemura<K, D>::add_simplex(const Facet& f, std::uint32_t p) {
     const std::size_t at = table_.find(key);
     if (at == Table::npos) {
       table_.insert(key, g, Table::State::open);
-      queue_.push_back(g);
+      queue_.push_back({g, s[j]});
       continue;
     }
     typename Table::Slot& slot = table_.at(at);
@@ -526,6 +593,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     if (D == 3) max_simplices_ = std::min<std::uint64_t>(max_simplices_, 64 * nu + 1024);
 
   tree_.build(pts, uniq);
+  if constexpr (K::exact) plane_of_.assign(n, kNone);
   out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 
   const StartFacet<D> start = find_start_facet<D>(pts, uniq);
@@ -535,7 +603,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     Facet f = start.ids;
     for (int side = 0; side < 2 && ok; ++side) {
       if (side == 1) std::swap(f[0], f[1]);
-      const std::uint32_t p = search(f);
+      const std::uint32_t p = search(f, kNone);
       if (p == kNone) {
         ++hull_facets_;
         continue;
@@ -545,7 +613,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   }
   std::size_t head = 0;
   while (ok && head < queue_.size()) {
-    const Facet f = queue_[head++];
+    const auto [f, apex] = queue_[head++];
     if (head > 4096 && 2 * head > queue_.size()) {  // compact the FIFO
       queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head));
       head = 0;
@@ -553,7 +621,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     const std::size_t at = table_.find(Table::sorted(f));
     if (at == Table::npos || table_.at(at).state != Table::State::open) continue;  // closed since
     const std::uint64_t examined_before = examined_;
-    const std::uint32_t p = search(f);  // reads the table only
+    const std::uint32_t p = search(f, apex);  // reads the table only
     if (keep_closed_)
       table_.at(at).state = Table::State::closed;
     else
@@ -561,6 +629,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     if (p == kNone) {
       ++hull_facets_;
       hull_examined_ += examined_ - examined_before;
+      if constexpr (K::exact) record_hull_plane(f, apex);
       continue;
     }
     ok = add_simplex(f, p);
@@ -580,7 +649,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       }
   }
   const std::uint64_t bytes =
-      tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Facet);
+      tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Queued) +
+      hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4;
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
     res.message = message_;
@@ -596,6 +666,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"points_examined", examined_},
       {"points_examined_per_facet_x1000", per_facet_x1000},
       {"points_examined_hull_facets", hull_examined_},
+      {"hull_facets_by_plane", hull_by_plane_},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
       {"balls_computed", balls_},

@@ -13,6 +13,7 @@
 //   - float / epsilon: an outcome, never a throw or a hang;
 //   - the search tree keeps the points examined per facet bounded on uniform
 //     input and on the Kettner grid (consecutive doubles plus two far points);
+//   - hull facets on a known hull plane: same result, and the rule is used;
 //   - the interval widening equals nextafter; the facet table agrees with std::map.
 #include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
@@ -299,6 +300,56 @@ TEST_CASE("tanemura: the search tree bounds the work per facet", "[tanemura]") {
   CHECK(counter(k, "facets_searched") >= k.simplices.size() / 3);
   const RunResult kb = go(point_set<2>(gen::kettner_grid(64)), "bowyer-watson", "adaptive");
   CHECK(oracle::canonical_simplices<2>(k.simplices) == oracle::canonical_simplices<2>(kb.simplices));
+}
+
+TEST_CASE("tanemura: hull facets settled by a known hull plane", "[tanemura]") {
+  // A facet whose vertices lie on the plane of a hull facet found earlier, on
+  // the same side, is a hull facet without a search (algorithms/tanemura.hpp,
+  // on_known_hull_plane). Sets with large coplanar hull faces (where the rule
+  // saves the climb) and interior facets next to them (where a rule that
+  // skipped the coplanarity test or the side test would drop simplices).
+  auto value = [](const Counters& c, const std::string& name) {
+    for (const auto& [k, v] : c)
+      if (k == name) return v;
+    FAIL("no counter " << name);
+    return std::uint64_t{0};
+  };
+  std::vector<std::vector<Point3>> sets = {gen::rotated_lattice<3>(700), lattice3(6)};
+  {
+    // Integer points on the six faces of a cube, sparse random points inside:
+    // the faces' leaves hold few candidates for the interior facets near them.
+    std::vector<Point3> p;
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j)
+        for (int a = 0; a < 3; ++a)
+          for (int side : {0, 8}) {
+            Point3 q{};
+            q[a] = side;
+            q[(a + 1) % 3] = i;
+            q[(a + 2) % 3] = j;
+            p.push_back(q);
+          }
+    for (const Point3& q : gen::uniform<3>(60, 5, 0.5, 7.5)) p.push_back(q);
+    sets.push_back(p);
+    // The same cube's faces, rotated (exact integers, oblique planes).
+    std::vector<Point3> r;
+    for (const Point3& q : p) {
+      const double x = std::round(q[0]), y = std::round(q[1]), z = std::round(q[2]);
+      if (x != q[0] || y != q[1] || z != q[2]) continue;
+      r.push_back({3 * x - 2 * y + 6 * z, 6 * x + 3 * y - 2 * z, -2 * x + 6 * y + 3 * z});
+    }
+    for (const Point3& q : gen::uniform<3>(200, 6, 1, 7))
+      r.push_back({3 * q[0] - 2 * q[1] + 6 * q[2], 6 * q[0] + 3 * q[1] - 2 * q[2], -2 * q[0] + 6 * q[1] + 3 * q[2]});
+    sets.push_back(r);
+  }
+  for (const auto& s : sets)
+    for (const char* k : kExact) {
+      same_as_bw<3>(s, k);
+      const RunResult t = go(point_set<3>(s), "tanemura", k);
+      INFO("kernel " << k << " n " << s.size());
+      // Most hull facets are settled by the rule (every face is one plane).
+      CHECK(value(t.counters, "hull_facets_by_plane") * 10 > value(t.counters, "hull_facets") * 8);
+    }
 }
 
 TEST_CASE("tanemura: near-duplicates stay in the filters and keep the search pruned", "[tanemura]") {
