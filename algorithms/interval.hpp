@@ -37,6 +37,21 @@ struct Iv {
     return std::bit_cast<double>(x > 0 ? b + 1 : b - 1);
   }
 
+  // The arithmetic below widens with lower() / upper() instead: no branch, four
+  // instructions (down and up were a fifth of the search's instructions on
+  // clustered 3D input). lower(x) <= down(x) for every x: for x normal, with
+  // u = ulp(x) = the spacing of the doubles on x's binade, |x| 2^-52 rounds to
+  // at least u (u is a power of two >= 2^-1074 and rounding is monotone), so
+  // x - |x| 2^-52 is at most x - u exactly and rounds to at most x - u, a
+  // double (for x < 0, |x| + u is one); for x subnormal or zero, the
+  // subtraction of 2^-1074 is exact and steps down one subnormal spacing (for
+  // normal x it changes nothing or steps down more). Rounding to nearest puts
+  // the exact result within half a spacing of x, so lower(x) is below it.
+  // lower(+inf) and upper(-inf) are NaN (unbounded), lower(-inf) = -inf,
+  // upper(+inf) = +inf, NaN stays NaN. upper is the mirror image.
+  static double lower(double x) { return (x - std::fabs(x) * 0x1p-52) - 0x1p-1074; }
+  static double upper(double x) { return (x + std::fabs(x) * 0x1p-52) + 0x1p-1074; }
+
   // Rounded results that are exact need no widening, so exact data (lattices,
   // axis-aligned facets) keep point intervals and prune exactly. Exactness is
   // decided by error-free transformations (Shewchuk 1997 section 2: Knuth's
@@ -78,29 +93,31 @@ struct Iv {
   bool bounded() const { return std::isfinite(lo) && std::isfinite(hi) && lo <= hi; }
   bool contains_zero() const { return !(lo > 0) && !(hi < 0); }  // also true for NaN
 
-  friend Iv operator+(Iv a, Iv b) { return {down(a.lo + b.lo), up(a.hi + b.hi)}; }
-  friend Iv operator-(Iv a, Iv b) { return {down(a.lo - b.hi), up(a.hi - b.lo)}; }
+  friend Iv operator+(Iv a, Iv b) { return {lower(a.lo + b.lo), upper(a.hi + b.hi)}; }
+  friend Iv operator-(Iv a, Iv b) { return {lower(a.lo - b.hi), upper(a.hi - b.lo)}; }
   friend Iv operator*(Iv a, Iv b) {
     const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4))
+    // A NaN product (0 * inf, or a NaN bound) makes the sum NaN; so does inf - inf,
+    // from infinite products only: unbounded either way.
+    if (std::isnan(p1 + p2 + p3 + p4))
       return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-    return {down(std::min(std::min(p1, p2), std::min(p3, p4))),
-            up(std::max(std::max(p1, p2), std::max(p3, p4)))};
+    return {lower(std::min(std::min(p1, p2), std::min(p3, p4))),
+            upper(std::max(std::max(p1, p2), std::max(p3, p4)))};
   }
   // Division by an interval that excludes zero (else NaN: unbounded).
   friend Iv operator/(Iv a, Iv b) {
     if (b.contains_zero())
       return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     const double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo, p4 = a.hi / b.hi;
-    return {down(std::min(std::min(p1, p2), std::min(p3, p4))),
-            up(std::max(std::max(p1, p2), std::max(p3, p4)))};
+    return {lower(std::min(std::min(p1, p2), std::min(p3, p4))),
+            upper(std::max(std::max(p1, p2), std::max(p3, p4)))};
   }
   // Square: non-negative enclosure.
   friend Iv sq(Iv a) {
     const double l = std::fabs(a.lo), h = std::fabs(a.hi);
     const double big = std::max(l, h);
     const double small = a.contains_zero() ? 0.0 : std::min(l, h);
-    return {small == 0 ? 0.0 : std::max(0.0, down(small * small)), up(big * big)};
+    return {small == 0 ? 0.0 : std::max(0.0, lower(small * small)), upper(big * big)};
   }
 };
 

@@ -14,7 +14,8 @@
 //   - the search tree keeps the points examined per facet bounded on uniform
 //     input and on the Kettner grid (consecutive doubles plus two far points);
 //   - hull facets on a known hull plane: same result, and the rule is used;
-//   - the interval widening equals nextafter; the facet table agrees with std::map.
+//   - the interval widening equals nextafter (the arithmetic's widens at least as
+//     far); the facet table agrees with std::map.
 #include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -390,6 +391,24 @@ TEST_CASE("tanemura: interval widening is nextafter; the facet table matches std
     if (std::isnan(x)) continue;
     REQUIRE(Iv::down(x) == std::nextafter(x, -INFINITY));
     REQUIRE(Iv::up(x) == std::nextafter(x, INFINITY));
+    // The arithmetic's branch-free widening steps at least as far (finite x).
+    if (std::isfinite(x)) {
+      REQUIRE(Iv::lower(x) <= Iv::down(x));
+      REQUIRE(Iv::upper(x) >= Iv::up(x));
+    }
+  }
+  // Every binade's edges, subnormals and zeros included.
+  for (int e = -1074; e <= 1023; ++e)
+    for (const double m : {1.0, 1.5, 2 - 0x1p-52, 1 + 0x1p-52})
+      for (const double sgn : {1.0, -1.0}) {
+        const double x = sgn * std::ldexp(m, e);
+        if (!std::isfinite(x)) continue;
+        REQUIRE(Iv::lower(x) <= Iv::down(x));
+        REQUIRE(Iv::upper(x) >= Iv::up(x));
+      }
+  for (double x : {0.0, -0.0}) {
+    CHECK(Iv::lower(x) == -5e-324);
+    CHECK(Iv::upper(x) == 5e-324);
   }
   for (double x : {0.0, -0.0, 5e-324, -5e-324, 1.7976931348623157e308, -1.7976931348623157e308}) {
     CHECK(Iv::down(x) < x);
