@@ -152,6 +152,10 @@ class Tanemura {
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
   [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  // The same answer, cheaper: the corner of each axis from the normal's sign
+  // (set_outer_corners, once per search); box_may_be_outer decides any prune.
+  bool box_may_be_outer_fast(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  void set_outer_corners();
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                          const Ball& ball) const;
   bool point_may_be_in_ball(const Point<D>& p) const;
@@ -196,6 +200,12 @@ class Tanemura {
   std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - C (enclosures)
   Iv fr2_{};                         // its squared radius (enclosure)
   std::array<double, D> target_{};   // the facet's centroid (scaled, rounded): visit order only
+  // box_may_be_outer_fast: per axis, whether the box's upper end maximises
+  // nrm_i (x_i - f0_i), and f0_i's end to subtract; outer_mixed_: an
+  // enclosure nrm_i spans zero (then the four-corner test).
+  std::array<bool, D> outer_hi_{};
+  std::array<double, D> outer_f0_{};
+  bool outer_mixed_ = false;
   std::array<std::uint32_t, D> first_leaves_{};  // the leaves of the facet's vertices
   std::uint32_t best_ = kNone;
   // An enclosure of the circumsphere of (f, b) for best_ or an earlier best b
@@ -323,6 +333,37 @@ bool Tanemura<K, D>::box_may_be_outer(const std::array<double, D>& lo,
 }
 
 template <class K, int D>
+void Tanemura<K, D>::set_outer_corners() {
+  outer_mixed_ = false;
+  for (int i = 0; i < D; ++i) {
+    outer_hi_[i] = nrm_[i].lo >= 0;
+    outer_f0_[i] = outer_hi_[i] ? f0_[i].lo : f0_[i].hi;
+    outer_mixed_ |= !(nrm_[i].lo >= 0) && !(nrm_[i].hi <= 0);  // NaN: mixed
+  }
+}
+
+template <class K, int D>
+bool Tanemura<K, D>::box_may_be_outer_fast(const std::array<double, D>& lo,
+                                           const std::array<double, D>& hi) const {
+  // With nrm_i >= 0 (both ends), n (x_i - f0_i) is largest at x_i = hi_i,
+  // f0_i = f0_i.lo for either end n of nrm_i, and rounding is monotone: the
+  // largest of box_may_be_outer's four rounded products is one of these two
+  // (mirror image for nrm_i <= 0). So s and a are box_may_be_outer's (its
+  // skipped zero axes add zeros), and where this keeps the box so does it;
+  // a prune is left to it (its underflow guards).
+  if (outer_mixed_) return box_may_be_outer(lo, hi);
+  double s = 0, a = 0;
+  for (int i = 0; i < D; ++i) {
+    const double d = (outer_hi_[i] ? hi[i] : lo[i]) - outer_f0_[i];
+    const double m = std::max(nrm_[i].lo * d, nrm_[i].hi * d);
+    s += m;
+    a += std::fabs(m);
+  }
+  if (!(s + 0x1p-44 * a <= 0)) return true;
+  return box_may_be_outer(lo, hi);
+}
+
+template <class K, int D>
 bool Tanemura<K, D>::box_may_meet_ball(const std::array<double, D>& lo,
                                        const std::array<double, D>& hi, const Ball& ball) const {
   // Squared distance from the box to the centre enclosure in plain doubles;
@@ -399,7 +440,7 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leav
   ++nodes_visited_;
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
-  if (!box_may_be_outer(n.lo, n.hi)) return;
+  if (!box_may_be_outer_fast(n.lo, n.hi)) return;
   if (KdTree<D>::is_leaf(n)) {
     if (skip_first_leaves)
       for (int j = 0; j < D; ++j)
@@ -476,6 +517,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
     nrm_ = {cross(1, 2), cross(2, 0), cross(0, 1)};
   }
   pencil_ready_ = false;
+  set_outer_corners();
   for (int i = 0; i < D; ++i) {
     double s = 0;
     for (int j = 0; j < D; ++j) s += q[j][i].lo;
