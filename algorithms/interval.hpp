@@ -113,11 +113,14 @@ struct Iv {
             upper(std::max(std::max(p1, p2), std::max(p3, p4)))};
   }
   // Square: non-negative enclosure.
+  // No branch (the sign test mispredicted): the least |x| on [lo, hi] is
+  // max(lo, -hi, 0); lower(0) < 0 is then clamped to 0. A NaN or infinite
+  // bound makes 0 (lo + hi) NaN, and so the upper end (unbounded; std::max
+  // alone could drop a NaN).
   friend Iv sq(Iv a) {
-    const double l = std::fabs(a.lo), h = std::fabs(a.hi);
-    const double big = std::max(l, h);
-    const double small = a.contains_zero() ? 0.0 : std::min(l, h);
-    return {small == 0 ? 0.0 : std::max(0.0, lower(small * small)), upper(big * big)};
+    const double big = std::max(std::fabs(a.lo), std::fabs(a.hi));
+    const double small = std::max(std::max(a.lo, -a.hi), 0.0);
+    return {std::max(0.0, lower(small * small)), upper(big * big) + 0.0 * (a.lo + a.hi)};
   }
 };
 
