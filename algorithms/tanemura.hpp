@@ -73,6 +73,10 @@
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/mp_kernel.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace dlab {
 
 template <class K, int D>
@@ -125,6 +129,20 @@ class Tanemura {
         });
       return -s;  // orient_pos > 0 means orient3d < 0 (algorithms/oriented.hpp)
     }
+  }
+
+  // max(x, 0) without a branch: gcc compiles std::max and ?: on doubles to
+  // branches here (IEEE zeros and NaN), and in the box tests they mispredict
+  // (a sixth of all mispredictions, clustered 3D). SSE2: maxsd (NaN gives 0);
+  // else a mask of the sign bit (NaN with a clear sign bit stays NaN). Either
+  // way a NaN gap could only make a box look nearer: never a wrong prune.
+  static double pos_part(double x) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_setzero_pd()));
+#else
+    const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(b & ((b >> 63) - 1));
+#endif
   }
 
   static double l1(const Point<D>& x, const Point<D>& y) {
@@ -377,7 +395,10 @@ bool Tanemura<K, D>::box_may_meet_ball(const std::array<double, D>& lo,
   // than 16, relative 2^-53 each, plus subnormal crumbs), so a prune is sound.
   double d2 = 0;
   for (int i = 0; i < D; ++i) {
-    const double g = std::max({0.0, lo[i] - ball.centre[i].hi, ball.centre[i].lo - hi[i]});
+    // At most one of the two gaps is positive (lo <= hi, centre.lo <= centre.hi,
+    // and rounding keeps signs), so the gap is the sum of their positive parts
+    // (the same double as max(0, a, b); bit masks, no branch).
+    const double g = pos_part(lo[i] - ball.centre[i].hi) + pos_part(ball.centre[i].lo - hi[i]);
     d2 += g * g;
   }
   return !(d2 > ball.r2_prune);
@@ -434,7 +455,7 @@ template <class K, int D>
 double Tanemura<K, D>::distance2_to_target(const typename KdTree<D>::Node& n) const {
   double d2 = 0;
   for (int i = 0; i < D; ++i) {
-    const double g = std::max({0.0, n.lo[i] - target_[i], target_[i] - n.hi[i]});
+    const double g = pos_part(n.lo[i] - target_[i]) + pos_part(target_[i] - n.hi[i]);
     d2 += g * g;
   }
   return d2;
