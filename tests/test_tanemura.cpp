@@ -414,6 +414,16 @@ TEST_CASE("tanemura: interval widening is nextafter; the facet table matches std
     CHECK(Iv::lower_rel(x) == 0);
     CHECK(Iv::upper_rel(x) == 0);
   }
+  // Overflow: an infinite result gives an unbounded interval (the start
+  // facet's filters, which need the finite inner bound, widen by nextafter).
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    CHECK(std::isnan(Iv::lower_rel(inf)));
+    CHECK(std::isnan(Iv::upper_rel(-inf)));
+    CHECK(Iv::lower_rel(-inf) == -inf);
+    CHECK(Iv::upper_rel(inf) == inf);
+    CHECK(!(Iv::exact(0x1p1000) * Iv::exact(0x1p100)).bounded());
+  }
   {
     const Iv z = Iv::exact(0.75) - Iv::exact(0.75), p = Iv{0, 0} * Iv{-3, 5}, s = sq(Iv{-0.5, 0.25});
     CHECK((z.lo == 0 && z.hi == 0 && p.lo == 0 && p.hi == 0 && s.lo == 0));
