@@ -30,8 +30,23 @@ class FacetTable {
 
   FacetTable() { slots_.resize(1024); }
 
+  // A sorting network of min / max (conditional moves: std::sort's insertion
+  // sort mispredicted on every other call).
   static Facet sorted(Facet f) {
-    std::sort(f.begin(), f.end());
+    const auto order = [&f](int i, int j) {
+      const std::uint32_t a = std::min(f[i], f[j]), b = std::max(f[i], f[j]);
+      f[i] = a;
+      f[j] = b;
+    };
+    if constexpr (D == 2) {
+      order(0, 1);
+    } else if constexpr (D == 3) {
+      order(0, 1);
+      order(1, 2);
+      order(0, 1);
+    } else {
+      std::sort(f.begin(), f.end());
+    }
     return f;
   }
   // Same orientation: equal up to an even permutation (2D: equal; 3D: a rotation).

@@ -29,7 +29,12 @@
 //     Points collinear with a hull edge (coplanar with a hull facet) are
 //     never candidates, so the hull is made of the Delaunay facets of the
 //     points on it, exactly CGAL's hull rule (algorithms/oriented.hpp): a
-//     point between two hull vertices is a vertex.
+//     point between two hull vertices is a vertex. Proving it costs a climb
+//     through every leaf the facet's plane crosses; on a plane full of points
+//     (a lattice's face, oblique to the tree's boxes) that was 450 points per
+//     hull facet (rotated lattice, n = 5000). So, exact kernels only: a facet
+//     whose vertices lie on the plane of a hull facet found before, open on
+//     the same side, is a hull facet at once (on_known_hull_plane).
 //   * Search structure (algorithms/kd_tree.hpp): a kd-tree with boxes. The
 //     search starts at the leaf of the facet's first vertex and climbs to the
 //     root, visiting each sibling subtree on the way, children nearer the
@@ -51,6 +56,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -66,6 +72,10 @@
 #include "algorithms/tanemura_start.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/mp_kernel.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace dlab {
 
@@ -121,14 +131,33 @@ class Tanemura {
     }
   }
 
+  // max(x, 0) without a branch: gcc compiles std::max and ?: on doubles to
+  // branches here (IEEE zeros and NaN), and in the box tests they mispredict
+  // (a sixth of all mispredictions, clustered 3D). SSE2: maxsd (NaN gives 0);
+  // else a mask of the sign bit (NaN with a clear sign bit stays NaN). Either
+  // way a NaN gap could only make a box look nearer: never a wrong prune.
+  static double pos_part(double x) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_setzero_pd()));
+#else
+    const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(b & ((b >> 63) - 1));
+#endif
+  }
+
   static double l1(const Point<D>& x, const Point<D>& y) {
     double s = 0;
     for (int i = 0; i < D; ++i) s += std::fabs(x[i] - y[i]);
     return s;  // a heuristic only (overflow to inf is harmless)
   }
 
-  std::uint32_t search(const Facet& f);
+  // apex: the vertex of the simplex behind f (kNone for the start facet).
+  std::uint32_t search(const Facet& f, std::uint32_t apex);
   bool add_simplex(const Facet& f, std::uint32_t p);  // false: failure (message_ set)
+  // Exact kernels: whether f lies in the plane of a hull facet found earlier,
+  // with the same open side (then f is a hull facet too: see search).
+  bool on_known_hull_plane(const Facet& f);
+  void record_hull_plane(const Facet& f, std::uint32_t apex);
 
   // ---- search helpers (scaled coordinates, enclosures) ----
   struct Ball {
@@ -142,6 +171,10 @@ class Tanemura {
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
   [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  // The same answer, cheaper: the corner of each axis from the normal's sign
+  // (set_outer_corners, once per search); box_may_be_outer decides any prune.
+  bool box_may_be_outer_fast(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  void set_outer_corners();
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                          const Ball& ball) const;
   bool point_may_be_in_ball(const Point<D>& p) const;
@@ -157,7 +190,20 @@ class Tanemura {
   const Point<D>* pts_ = nullptr;
   KdTree<D> tree_;
   Table table_;
-  std::vector<Facet> queue_;
+  struct Queued {
+    Facet f;
+    std::uint32_t apex;  // the vertex of the simplex behind f
+  };
+  std::vector<Queued> queue_;
+  // Hull planes (exact kernels): a hull facet and the apex of the simplex
+  // behind it (strictly on its closed side); plane_of_[v]: the last one with
+  // vertex v, or kNone.
+  struct HullPlane {
+    Facet f;
+    std::uint32_t inner;
+  };
+  std::vector<HullPlane> hull_planes_;
+  std::vector<std::uint32_t> plane_of_;
   std::vector<std::uint32_t> out_;
   std::string message_;
   bool keep_closed_ = !K::exact;
@@ -173,6 +219,12 @@ class Tanemura {
   std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - C (enclosures)
   Iv fr2_{};                         // its squared radius (enclosure)
   std::array<double, D> target_{};   // the facet's centroid (scaled, rounded): visit order only
+  // box_may_be_outer_fast: per axis, whether the box's upper end maximises
+  // nrm_i (x_i - f0_i), and f0_i's end to subtract; outer_mixed_: an
+  // enclosure nrm_i spans zero (then the four-corner test).
+  std::array<std::uint64_t, D> outer_hi_{};  // all ones: the upper end (a bit mask: no branch)
+  std::array<double, D> outer_f0_{};
+  bool outer_mixed_ = false;
   std::array<std::uint32_t, D> first_leaves_{};  // the leaves of the facet's vertices
   std::uint32_t best_ = kNone;
   // An enclosure of the circumsphere of (f, b) for best_ or an earlier best b
@@ -185,7 +237,8 @@ class Tanemura {
   // counters
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
                 balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0,
-                hull_examined_ = 0;  // points examined by the searches that found no candidate
+                hull_examined_ = 0,  // points examined by the searches that found no candidate
+                hull_by_plane_ = 0;  // hull facets settled by a known hull plane (no climb)
 };
 
 template <class K, int D>
@@ -299,6 +352,42 @@ bool Tanemura<K, D>::box_may_be_outer(const std::array<double, D>& lo,
 }
 
 template <class K, int D>
+void Tanemura<K, D>::set_outer_corners() {
+  outer_mixed_ = false;
+  for (int i = 0; i < D; ++i) {
+    outer_hi_[i] = nrm_[i].lo >= 0 ? ~std::uint64_t{0} : 0;
+    outer_f0_[i] = outer_hi_[i] ? f0_[i].lo : f0_[i].hi;
+    outer_mixed_ |= !(nrm_[i].lo >= 0) && !(nrm_[i].hi <= 0);  // NaN: mixed
+  }
+}
+
+template <class K, int D>
+bool Tanemura<K, D>::box_may_be_outer_fast(const std::array<double, D>& lo,
+                                           const std::array<double, D>& hi) const {
+  // With nrm_i >= 0 (both ends), n (x_i - f0_i) is largest at x_i = hi_i,
+  // f0_i = f0_i.lo for either end n of nrm_i, and rounding is monotone: the
+  // largest of box_may_be_outer's four rounded products is one of these two
+  // (mirror image for nrm_i <= 0). So s and a are box_may_be_outer's (its
+  // skipped zero axes add zeros), and where this keeps the box so does it;
+  // a prune is left to it (its underflow guards).
+  if (outer_mixed_) return box_may_be_outer(lo, hi);
+  double s = 0, a = 0;
+  for (int i = 0; i < D; ++i) {
+    // lo[i] or hi[i], selected bitwise: a branch here mispredicted on a
+    // quarter of the boxes (the choice changes from one facet to the next).
+    const std::uint64_t m = outer_hi_[i];
+    const double x = std::bit_cast<double>((std::bit_cast<std::uint64_t>(lo[i]) & ~m) |
+                                           (std::bit_cast<std::uint64_t>(hi[i]) & m));
+    const double d = x - outer_f0_[i];
+    const double p = std::max(nrm_[i].lo * d, nrm_[i].hi * d);
+    s += p;
+    a += std::fabs(p);
+  }
+  if (!(s + 0x1p-44 * a <= 0)) return true;
+  return box_may_be_outer(lo, hi);
+}
+
+template <class K, int D>
 bool Tanemura<K, D>::box_may_meet_ball(const std::array<double, D>& lo,
                                        const std::array<double, D>& hi, const Ball& ball) const {
   // Squared distance from the box to the centre enclosure in plain doubles;
@@ -306,7 +395,10 @@ bool Tanemura<K, D>::box_may_meet_ball(const std::array<double, D>& lo,
   // than 16, relative 2^-53 each, plus subnormal crumbs), so a prune is sound.
   double d2 = 0;
   for (int i = 0; i < D; ++i) {
-    const double g = std::max({0.0, lo[i] - ball.centre[i].hi, ball.centre[i].lo - hi[i]});
+    // At most one of the two gaps is positive (lo <= hi, centre.lo <= centre.hi,
+    // and rounding keeps signs), so the gap is the sum of their positive parts
+    // (the same double as max(0, a, b); bit masks, no branch).
+    const double g = pos_part(lo[i] - ball.centre[i].hi) + pos_part(ball.centre[i].lo - hi[i]);
     d2 += g * g;
   }
   return !(d2 > ball.r2_prune);
@@ -363,7 +455,7 @@ template <class K, int D>
 double Tanemura<K, D>::distance2_to_target(const typename KdTree<D>::Node& n) const {
   double d2 = 0;
   for (int i = 0; i < D; ++i) {
-    const double g = std::max({0.0, n.lo[i] - target_[i], target_[i] - n.hi[i]});
+    const double g = pos_part(n.lo[i] - target_[i]) + pos_part(target_[i] - n.hi[i]);
     d2 += g * g;
   }
   return d2;
@@ -375,7 +467,7 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leav
   ++nodes_visited_;
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
-  if (!box_may_be_outer(n.lo, n.hi)) return;
+  if (!box_may_be_outer_fast(n.lo, n.hi)) return;
   if (KdTree<D>::is_leaf(n)) {
     if (skip_first_leaves)
       for (int j = 0; j < D; ++j)
@@ -389,7 +481,39 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leav
 }
 
 template <class K, int D>
-std::uint32_t Tanemura<K, D>::search(const Facet& f) {
+bool Tanemura<K, D>::on_known_hull_plane(const Facet& f) {
+  // A hull facet h has no point strictly on its open side (exact search). If
+  // every vertex of f lies on h's plane (exact orient = 0) and h's inner
+  // point (the apex behind h, strictly on its closed side) is strictly on
+  // f's closed side, f's open half-space is h's: f has no candidate either.
+  for (int j = 0; j < D; ++j) {
+    const std::uint32_t h = plane_of_[f[j]];
+    if (h == kNone) continue;
+    bool seen = false;
+    for (int i = 0; i < j; ++i) seen |= plane_of_[f[i]] == h;
+    if (seen) continue;
+    const HullPlane& hp = hull_planes_[h];
+    bool coplanar = true;
+    for (int i = 0; i < D && coplanar; ++i) {
+      bool shared = false;
+      for (int m = 0; m < D; ++m) shared |= hp.f[m] == f[i];
+      if (!shared) coplanar = orient(hp.f, pts_[f[i]]) == Sign::zero;
+    }
+    if (coplanar && orient(f, pts_[hp.inner]) == Sign::negative) return true;
+  }
+  return false;
+}
+
+template <class K, int D>
+void Tanemura<K, D>::record_hull_plane(const Facet& f, std::uint32_t apex) {
+  if (apex == kNone) return;
+  const auto h = static_cast<std::uint32_t>(hull_planes_.size());
+  hull_planes_.push_back({f, apex});
+  for (int j = 0; j < D; ++j) plane_of_[f[j]] = h;
+}
+
+template <class K, int D>
+std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   ++searches_;
   best_ = kNone;
   double near_f = std::numeric_limits<double>::infinity();
@@ -420,6 +544,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     nrm_ = {cross(1, 2), cross(2, 0), cross(0, 1)};
   }
   pencil_ready_ = false;
+  set_outer_corners();
   for (int i = 0; i < D; ++i) {
     double s = 0;
     for (int j = 0; j < D; ++j) s += q[j][i].lo;
@@ -440,6 +565,17 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f) {
     if (!seen) visit(f, first_leaves_[j], false);
   }
   defer_ball_ = false;
+  // No candidate near f: f may be a hull facet. On a hull plane found before
+  // (a lattice's face: all its points are coplanar, so the climb would visit
+  // every leaf that the plane crosses), f is one: exact kernels only (an
+  // inexact kernel's hull facet is no proof).
+  (void)apex;
+  if constexpr (K::exact) {
+    if (best_ == kNone && on_known_hull_plane(f)) {
+      ++hull_by_plane_;
+      return kNone;
+    }
+  }
   refresh_ball();
   std::uint32_t k = first_leaves_[0];
   while (k != KdTree<D>::root()) {
@@ -471,7 +607,7 @@ bool Tanemura<K, D>::add_simplex(const Facet& f, std::uint32_t p) {
     const std::size_t at = table_.find(key);
     if (at == Table::npos) {
       table_.insert(key, g, Table::State::open);
-      queue_.push_back(g);
+      queue_.push_back({g, s[j]});
       continue;
     }
     typename Table::Slot& slot = table_.at(at);
@@ -526,6 +662,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     if (D == 3) max_simplices_ = std::min<std::uint64_t>(max_simplices_, 64 * nu + 1024);
 
   tree_.build(pts, uniq);
+  if constexpr (K::exact) plane_of_.assign(n, kNone);
   out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 
   const StartFacet<D> start = find_start_facet<D>(pts, uniq);
@@ -535,7 +672,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     Facet f = start.ids;
     for (int side = 0; side < 2 && ok; ++side) {
       if (side == 1) std::swap(f[0], f[1]);
-      const std::uint32_t p = search(f);
+      const std::uint32_t p = search(f, kNone);
       if (p == kNone) {
         ++hull_facets_;
         continue;
@@ -545,7 +682,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   }
   std::size_t head = 0;
   while (ok && head < queue_.size()) {
-    const Facet f = queue_[head++];
+    const auto [f, apex] = queue_[head++];
     if (head > 4096 && 2 * head > queue_.size()) {  // compact the FIFO
       queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head));
       head = 0;
@@ -553,7 +690,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     const std::size_t at = table_.find(Table::sorted(f));
     if (at == Table::npos || table_.at(at).state != Table::State::open) continue;  // closed since
     const std::uint64_t examined_before = examined_;
-    const std::uint32_t p = search(f);  // reads the table only
+    const std::uint32_t p = search(f, apex);  // reads the table only
     if (keep_closed_)
       table_.at(at).state = Table::State::closed;
     else
@@ -561,6 +698,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     if (p == kNone) {
       ++hull_facets_;
       hull_examined_ += examined_ - examined_before;
+      if constexpr (K::exact) record_hull_plane(f, apex);
       continue;
     }
     ok = add_simplex(f, p);
@@ -580,7 +718,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       }
   }
   const std::uint64_t bytes =
-      tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Facet);
+      tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Queued) +
+      hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4;
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
     res.message = message_;
@@ -596,6 +735,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"points_examined", examined_},
       {"points_examined_per_facet_x1000", per_facet_x1000},
       {"points_examined_hull_facets", hull_examined_},
+      {"hull_facets_by_plane", hull_by_plane_},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
       {"balls_computed", balls_},

@@ -18,17 +18,38 @@ namespace {
 
 using Q = boost::multiprecision::mpq_rational;
 
+// The filters' interval arithmetic, widened by nextafter (Iv::down / up), not
+// by Iv's relative step: on huge coordinates the products overflow, and
+// down(+inf) = DBL_MAX still bounds the exact value, where Iv's operators give
+// NaN and the sign would go to GMP (2D `gen huge`, n = 5000: 2 M -> 96 M
+// instructions in this file). Not in the search's hot loop: the speed of
+// these does not matter.
+struct Ivn {
+  double lo = 0, hi = 0;
+  static Ivn exact(double x) { return {x, x}; }
+  operator Iv() const { return {lo, hi}; }
+  friend Ivn operator+(Ivn a, Ivn b) { return {Iv::down(a.lo + b.lo), Iv::up(a.hi + b.hi)}; }
+  friend Ivn operator-(Ivn a, Ivn b) { return {Iv::down(a.lo - b.hi), Iv::up(a.hi - b.lo)}; }
+  friend Ivn operator*(Ivn a, Ivn b) {
+    const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+    if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4))
+      return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    return {Iv::down(std::min(std::min(p1, p2), std::min(p3, p4))),
+            Iv::up(std::max(std::max(p1, p2), std::max(p3, p4)))};
+  }
+};
+
 template <int D>
 struct Exact {
   const Point<D>& a;
   const Point<D>& b;
   // 3D pencil: L(x) = (x - a) . nrm, nrm = (b - a) x (v - a).
-  std::array<Iv, 3> nrm_iv{};
+  std::array<Ivn, 3> nrm_iv{};
   std::array<Q, 3> nrm_q{};
 
-  Iv s0_iv(const Point<D>& x) const {
-    Iv s{0, 0};
-    for (int i = 0; i < D; ++i) s = s + (Iv::exact(x[i]) - Iv::exact(a[i])) * (Iv::exact(x[i]) - Iv::exact(b[i]));
+  Ivn s0_iv(const Point<D>& x) const {
+    Ivn s{0, 0};
+    for (int i = 0; i < D; ++i) s = s + (Ivn::exact(x[i]) - Ivn::exact(a[i])) * (Ivn::exact(x[i]) - Ivn::exact(b[i]));
     return s;
   }
   Q s0_q(const Point<D>& x) const {
@@ -37,18 +58,18 @@ struct Exact {
     return s;
   }
   int s0_sign(const Point<D>& x) const {
-    const Iv s = s0_iv(x);
+    const Ivn s = s0_iv(x);
     if (s.lo > 0) return 1;
     if (s.hi < 0) return -1;
     return s0_q(x).sign();
   }
   void set_v(const Point3& v) {
     if constexpr (D == 3) {
-      std::array<Iv, 3> u, w;
+      std::array<Ivn, 3> u, w;
       std::array<Q, 3> uq, wq;
       for (int i = 0; i < 3; ++i) {
-        u[i] = Iv::exact(b[i]) - Iv::exact(a[i]);
-        w[i] = Iv::exact(v[i]) - Iv::exact(a[i]);
+        u[i] = Ivn::exact(b[i]) - Ivn::exact(a[i]);
+        w[i] = Ivn::exact(v[i]) - Ivn::exact(a[i]);
         uq[i] = Q(b[i]) - Q(a[i]);
         wq[i] = Q(v[i]) - Q(a[i]);
       }
@@ -59,9 +80,9 @@ struct Exact {
       }
     }
   }
-  Iv l_iv(const Point<D>& x) const {
-    Iv s{0, 0};
-    for (int i = 0; i < D; ++i) s = s + (Iv::exact(x[i]) - Iv::exact(a[i])) * nrm_iv[i];
+  Ivn l_iv(const Point<D>& x) const {
+    Ivn s{0, 0};
+    for (int i = 0; i < D; ++i) s = s + (Ivn::exact(x[i]) - Ivn::exact(a[i])) * nrm_iv[i];
     return s;
   }
   Q l_q(const Point<D>& x) const {
@@ -70,7 +91,7 @@ struct Exact {
     return s;
   }
   int l_sign(const Point<D>& x) const {
-    const Iv s = l_iv(x);
+    const Ivn s = l_iv(x);
     if (s.lo > 0) return 1;
     if (s.hi < 0) return -1;
     return l_q(x).sign();
@@ -78,7 +99,7 @@ struct Exact {
   // sign(t(x) - t(y)) for L(x), L(y) of sign `side` (t = S0 / (side L)):
   // sign(S0(x) L(y) - S0(y) L(x)) * side.
   int compare_t(const Point<D>& x, const Point<D>& y, int side) const {
-    const Iv d = s0_iv(x) * l_iv(y) - s0_iv(y) * l_iv(x);
+    const Ivn d = s0_iv(x) * l_iv(y) - s0_iv(y) * l_iv(x);
     int s;
     if (d.lo > 0)
       s = 1;
@@ -196,7 +217,7 @@ StartFacet<D> find_start_facet(std::span<const Point<D>> pts, const std::vector<
         for (std::uint32_t id : ids) {
           if (id == ia || id == ib) continue;
           if (ex.l_sign(pts[id]) != sd) continue;
-          const Iv s0 = ex.s0_iv(pts[id]), l = ex.l_iv(pts[id]);
+          const Ivn s0 = ex.s0_iv(pts[id]), l = ex.l_iv(pts[id]);
           const double t = (0.5 * (s0.lo + s0.hi)) / (sd * 0.5 * (l.lo + l.hi));
           if (ic == ia || t < tbest || !std::isfinite(tbest)) {
             if (ic == ia || t < tbest) {

@@ -13,7 +13,10 @@
 //   - float / epsilon: an outcome, never a throw or a hang;
 //   - the search tree keeps the points examined per facet bounded on uniform
 //     input and on the Kettner grid (consecutive doubles plus two far points);
-//   - the interval widening equals nextafter; the facet table agrees with std::map.
+//   - hull facets on a known hull plane: same result, and the rule is used;
+//   - the interval widening equals nextafter (the arithmetic's widens at least as
+//     far, and keeps exact zeros); the operations enclose the exact results;
+//     the facet table agrees with std::map.
 #include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -301,6 +304,56 @@ TEST_CASE("tanemura: the search tree bounds the work per facet", "[tanemura]") {
   CHECK(oracle::canonical_simplices<2>(k.simplices) == oracle::canonical_simplices<2>(kb.simplices));
 }
 
+TEST_CASE("tanemura: hull facets settled by a known hull plane", "[tanemura]") {
+  // A facet whose vertices lie on the plane of a hull facet found earlier, on
+  // the same side, is a hull facet without a search (algorithms/tanemura.hpp,
+  // on_known_hull_plane). Sets with large coplanar hull faces (where the rule
+  // saves the climb) and interior facets next to them (where a rule that
+  // skipped the coplanarity test or the side test would drop simplices).
+  auto value = [](const Counters& c, const std::string& name) {
+    for (const auto& [k, v] : c)
+      if (k == name) return v;
+    FAIL("no counter " << name);
+    return std::uint64_t{0};
+  };
+  std::vector<std::vector<Point3>> sets = {gen::rotated_lattice<3>(700), lattice3(6)};
+  {
+    // Integer points on the six faces of a cube, sparse random points inside:
+    // the faces' leaves hold few candidates for the interior facets near them.
+    std::vector<Point3> p;
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j)
+        for (int a = 0; a < 3; ++a)
+          for (int side : {0, 8}) {
+            Point3 q{};
+            q[a] = side;
+            q[(a + 1) % 3] = i;
+            q[(a + 2) % 3] = j;
+            p.push_back(q);
+          }
+    for (const Point3& q : gen::uniform<3>(60, 5, 0.5, 7.5)) p.push_back(q);
+    sets.push_back(p);
+    // The same cube's faces, rotated (exact integers, oblique planes).
+    std::vector<Point3> r;
+    for (const Point3& q : p) {
+      const double x = std::round(q[0]), y = std::round(q[1]), z = std::round(q[2]);
+      if (x != q[0] || y != q[1] || z != q[2]) continue;
+      r.push_back({3 * x - 2 * y + 6 * z, 6 * x + 3 * y - 2 * z, -2 * x + 6 * y + 3 * z});
+    }
+    for (const Point3& q : gen::uniform<3>(200, 6, 1, 7))
+      r.push_back({3 * q[0] - 2 * q[1] + 6 * q[2], 6 * q[0] + 3 * q[1] - 2 * q[2], -2 * q[0] + 6 * q[1] + 3 * q[2]});
+    sets.push_back(r);
+  }
+  for (const auto& s : sets)
+    for (const char* k : kExact) {
+      same_as_bw<3>(s, k);
+      const RunResult t = go(point_set<3>(s), "tanemura", k);
+      INFO("kernel " << k << " n " << s.size());
+      // Most hull facets are settled by the rule (every face is one plane).
+      CHECK(value(t.counters, "hull_facets_by_plane") * 10 > value(t.counters, "hull_facets") * 8);
+    }
+}
+
 TEST_CASE("tanemura: near-duplicates stay in the filters and keep the search pruned", "[tanemura]") {
   // Copies of each point a few ulps apart (issue 17 section 3). The pruning
   // ball's enclosures, taken from a vertex far from a near-duplicate pair,
@@ -339,6 +392,45 @@ TEST_CASE("tanemura: interval widening is nextafter; the facet table matches std
     if (std::isnan(x)) continue;
     REQUIRE(Iv::down(x) == std::nextafter(x, -INFINITY));
     REQUIRE(Iv::up(x) == std::nextafter(x, INFINITY));
+    // The arithmetic's branch-free widening steps at least as far (normal x;
+    // below the normal range it relies on exactness or on may_underflow).
+    if (std::isfinite(x) && std::fabs(x) >= 0x1p-1022) {
+      REQUIRE(Iv::lower_rel(x) <= Iv::down(x));
+      REQUIRE(Iv::upper_rel(x) >= Iv::up(x));
+    }
+  }
+  // Every normal binade's edges.
+  for (int e = -1022; e <= 1023; ++e)
+    for (const double m : {1.0, 1.5, 2 - 0x1p-52, 1 + 0x1p-52})
+      for (const double sgn : {1.0, -1.0}) {
+        const double x = sgn * std::ldexp(m, e);
+        if (!std::isfinite(x)) continue;
+        REQUIRE(Iv::lower_rel(x) <= Iv::down(x));
+        REQUIRE(Iv::upper_rel(x) >= Iv::up(x));
+      }
+  // Exact zeros stay zeros (no subnormal operands downstream), sums included;
+  // a product that underflows is widened past zero.
+  for (double x : {0.0, -0.0}) {
+    CHECK(Iv::lower_rel(x) == 0);
+    CHECK(Iv::upper_rel(x) == 0);
+  }
+  // Overflow: an infinite result gives an unbounded interval (the start
+  // facet's filters, which need the finite inner bound, widen by nextafter).
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    CHECK(std::isnan(Iv::lower_rel(inf)));
+    CHECK(std::isnan(Iv::upper_rel(-inf)));
+    CHECK(Iv::lower_rel(-inf) == -inf);
+    CHECK(Iv::upper_rel(inf) == inf);
+    CHECK(!(Iv::exact(0x1p1000) * Iv::exact(0x1p100)).bounded());
+  }
+  {
+    const Iv z = Iv::exact(0.75) - Iv::exact(0.75), p = Iv{0, 0} * Iv{-3, 5}, s = sq(Iv{-0.5, 0.25});
+    CHECK((z.lo == 0 && z.hi == 0 && p.lo == 0 && p.hi == 0 && s.lo == 0));
+    const Iv u = Iv::exact(0x1p-600) * Iv::exact(0x1p-600);
+    CHECK((u.lo < 0 && u.hi > 0));
+    const Iv v = Iv::exact(0x1p-1000) * Iv::exact(0.75);
+    CHECK((v.lo < 0x1p-1000 * 0.75 && v.hi > 0x1p-1000 * 0.75));
   }
   for (double x : {0.0, -0.0, 5e-324, -5e-324, 1.7976931348623157e308, -1.7976931348623157e308}) {
     CHECK(Iv::down(x) < x);
@@ -404,4 +496,50 @@ TEST_CASE("tanemura: interval exactness claims agree with rational arithmetic", 
   const Iv u = tight_mul(Iv::exact(3), Iv::exact(0.5)), w = tight_mul(Iv::exact(0.1), Iv::exact(0.3));
   CHECK((u.lo == 1.5 && u.hi == 1.5));
   CHECK((w.lo < w.hi && Q(w.lo) < Q(0.1) * Q(0.3) && Q(0.1) * Q(0.3) < Q(w.hi)));
+}
+
+TEST_CASE("tanemura: interval operations enclose the exact results (rational arithmetic)", "[tanemura]") {
+  // +, -, *, / and sq on random intervals, exact results compared in Q at the
+  // ends (each operation is monotone in each argument on the intervals used,
+  // or its extremes are at the ends; sq's least value is 0 when 0 is inside).
+  using Q = boost::multiprecision::mpq_rational;
+  std::mt19937_64 g(11);
+  auto value = [&]() {
+    const double m = static_cast<double>(g() >> 11) * 0x1p-53;
+    const int e = g() % 8 == 0 ? static_cast<int>(g() % 2075) - 1074 : static_cast<int>(g() % 120) - 60;
+    return std::ldexp(g() % 2 ? m : -m, e);
+  };
+  auto interval = [&]() {
+    double a = value(), b = g() % 4 == 0 ? a : value();
+    if (b < a) std::swap(a, b);
+    return Iv{a, b};
+  };
+  auto encloses = [](const Iv& r, const Q& lo, const Q& hi) {
+    return r.bounded() && Q(r.lo) <= lo && hi <= Q(r.hi);
+  };
+  for (int i = 0; i < 20000; ++i) {
+    const Iv a = interval(), b = interval();
+    const Q al(a.lo), ah(a.hi), bl(b.lo), bh(b.hi);
+    INFO(a.lo << " " << a.hi << " " << b.lo << " " << b.hi);
+    if (const Iv r = a + b; r.bounded()) REQUIRE(encloses(r, al + bl, ah + bh));
+    if (const Iv r = a - b; r.bounded()) REQUIRE(encloses(r, al - bh, ah - bl));
+    const std::array<Q, 4> p{al * bl, al * bh, ah * bl, ah * bh};
+    if (const Iv r = a * b; r.bounded())
+      REQUIRE(encloses(r, *std::min_element(p.begin(), p.end()), *std::max_element(p.begin(), p.end())));
+    if (!b.contains_zero())
+      if (const Iv r = a / b; r.bounded()) {
+        const std::array<Q, 4> d{al / bl, al / bh, ah / bl, ah / bh};
+        REQUIRE(encloses(r, *std::min_element(d.begin(), d.end()), *std::max_element(d.begin(), d.end())));
+      }
+    const Q least = a.contains_zero() ? Q(0) : std::min(al * al, ah * ah), most = std::max(al * al, ah * ah);
+    if (const Iv r = sq(a); r.bounded()) REQUIRE(encloses(r, least, most));
+    REQUIRE(sq(a).lo >= 0);
+  }
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Iv a : {Iv{nan, 1}, Iv{1, nan}, Iv{-inf, 1}, Iv{1, inf}, Iv{nan, nan}}) {
+    CHECK(!sq(a).bounded());
+    CHECK(!(a * Iv{1, 2}).bounded());
+    CHECK(!(a + Iv{1, 2}).bounded());
+  }
+  CHECK(!(Iv{0, 0} * Iv{-inf, inf}).bounded());
 }
