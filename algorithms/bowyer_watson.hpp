@@ -167,15 +167,9 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   merged_.assign(n, kNotProcessed);
   mesh_.clear();
 
-  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
-  if (!init.found) return res;
-  // Simplices including ghosts: exactly 2n - 2 in 2D (a triangulated sphere
-  // on n + 1 vertices); in 3D about 6.75n for uniform points (measured; Dwyer
-  // 1991 gives 6.77n in a ball), so 7n avoids a reallocation (which would
-  // double the peak memory) on most inputs.
-  mesh_.reserve(D == 2 ? 2 * n + 16 : 7 * n + 64);
-  last_ = build_initial_mesh<D>(mesh_, init.ids);
-  for (std::uint32_t id : init.ids) merged_[id] = id;
+  const std::optional<std::uint32_t> first = start_incremental_mesh<D>(k_, pts, mesh_, merged_, res);
+  if (!first) return res;
+  last_ = *first;
 
   for (std::uint32_t i = 0; i < n; ++i) {
     if (merged_[i] != kNotProcessed) continue;  // a vertex of the initial simplex

@@ -41,6 +41,20 @@ struct BoundaryRecord {
   int slot;                            // where p sits in v (= the facet index towards `outside`)
 };
 
+// The record of facet f of cavity simplex s, whose outside is `outside`, for
+// new vertex i.
+template <int D>
+BoundaryRecord<D> boundary_record(const Mesh<D>& m, std::uint32_t s, int f, std::uint32_t i,
+                                  std::uint32_t outside) {
+  BoundaryRecord<D> r;
+  const std::uint32_t* w = m.vertices(s);
+  for (int j = 0; j <= D; ++j) r.v[j] = w[j];
+  r.v[f] = i;
+  r.outside = outside;
+  r.slot = f;
+  return r;
+}
+
 template <int D>
 class Restar {
   static constexpr int V = D + 1;

@@ -82,13 +82,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
         }
         guard.set_mark(m, t, out);
       }
-      BoundaryRecord<D> r;
-      const std::uint32_t* w = m.vertices(s);
-      for (int j = 0; j < V; ++j) r.v[j] = w[j];
-      r.v[f] = i;
-      r.outside = enc;
-      r.slot = f;
-      records.push_back(r);
+      records.push_back(boundary_record<D>(m, s, f, i, enc));
     }
   }
   return true;

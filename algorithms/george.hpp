@@ -267,13 +267,7 @@ bool George<K, D>::correct(std::uint32_t i, std::size_t nbase) {
         if (member(t)) continue;
         const Face vol = face_volume(s, f, enc, p);
         if (vol == Face::positive) {
-          BoundaryRecord<D> r;
-          const std::uint32_t* w = mesh_.vertices(s);
-          for (int j = 0; j < V; ++j) r.v[j] = w[j];
-          r.v[f] = i;
-          r.outside = enc;
-          r.slot = f;
-          records_.push_back(r);
+          records_.push_back(boundary_record<D>(mesh_, s, f, i, enc));
           rec_src_.push_back(s);
           continue;
         }

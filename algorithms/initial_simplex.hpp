@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -133,6 +134,25 @@ std::uint32_t build_initial_mesh(Mesh<D>& m, const std::array<std::uint32_t, D +
   }
   m.link_by_facets(all);
   return all[0];
+}
+
+// The start of an incremental run over pts (both Bowyer–Watsons): the initial
+// simplex, the mesh reserved for the whole run and built on it, its vertices
+// marked as processed in `merged`.  Returns the finite simplex, or nothing when
+// there is no initial simplex (the outcome is then in `res`).
+template <int D, class K>
+std::optional<std::uint32_t> start_incremental_mesh(const K& k, std::span<const Point<D>> pts, Mesh<D>& m,
+                                                    std::vector<std::uint32_t>& merged, TriangulationResult& res) {
+  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k, pts, res);
+  if (!init.found) return std::nullopt;
+  // Simplices including ghosts: exactly 2n - 2 in 2D (a triangulated sphere
+  // on n + 1 vertices); in 3D about 6.75n for uniform points (measured; Dwyer
+  // 1991 gives 6.77n in a ball), so 7n avoids a reallocation (which would
+  // double the peak memory) on most inputs.
+  const std::size_t n = pts.size();
+  m.reserve(D == 2 ? 2 * n + 16 : 7 * n + 64);
+  for (std::uint32_t id : init.ids) merged[id] = id;
+  return build_initial_mesh<D>(m, init.ids);
 }
 
 }  // namespace dlab

@@ -297,12 +297,7 @@ bool Lawson<K, D>::connect_exterior(std::uint32_t i, std::uint32_t start) {
         }
         mesh_.set_mark(t, out);
       }
-      BoundaryRecord<D> r;
-      for (int j = 0; j < V; ++j) r.v[j] = mesh_.vertex(s, j);
-      r.v[f] = i;
-      r.outside = enc;
-      r.slot = f;
-      records_.push_back(r);
+      records_.push_back(boundary_record<D>(mesh_, s, f, i, enc));
     }
   }
   std::string err;

@@ -39,6 +39,7 @@
 #include <atomic>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -426,11 +427,8 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   merged_.assign(n, kNotProcessed);
   mesh_.clear();
 
-  const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
-  if (!init.found) return res;
-  mesh_.reserve(D == 2 ? 2 * n + 16 : 7 * n + 64);  // as the serial algorithm
-  const std::uint32_t first = build_initial_mesh<D>(mesh_, init.ids);
-  for (std::uint32_t id : init.ids) merged_[id] = id;
+  const std::optional<std::uint32_t> first = start_incremental_mesh<D>(k_, pts, mesh_, merged_, res);
+  if (!first) return res;
   reserve_next_.store(mesh_.slots(), std::memory_order_relaxed);
   reserve_end_ = mesh_.slots();
 
@@ -442,7 +440,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   for (unsigned t = 0; t < threads_; ++t) {
     workers_.emplace_back(k_, mesh_, static_cast<std::uint8_t>(t + 1));
     workers_.back().guard.rebind(mesh_.marks());
-    workers_.back().last = first;
+    workers_.back().last = *first;
     workers_.back().stamp = 2 * t;
   }
 
