@@ -103,6 +103,19 @@ struct Iv {
   static Iv exact(double x) { return {x, x}; }
   bool bounded() const { return std::isfinite(lo) && std::isfinite(hi) && lo <= hi; }
   bool contains_zero() const { return !(lo > 0) && !(hi < 0); }  // also true for NaN
+  // The enclosure of a op b from its four corner results, each rounded once:
+  // widened by the relative step, and by 2^-1074 more when a corner may have
+  // underflowed (products and quotients alike).
+  static Iv from_corners(Iv a, Iv b, double p1, double p2, double p3, double p4) {
+    const double mn = std::min(std::min(p1, p2), std::min(p3, p4));
+    const double mx = std::max(std::max(p1, p2), std::max(p3, p4));
+    Iv r{lower_rel(mn), upper_rel(mx)};
+    if (!(std::fabs(mn) >= 0x1p-1022) || !(std::fabs(mx) >= 0x1p-1022))
+      if (may_underflow(a.lo, b.lo, p1) || may_underflow(a.lo, b.hi, p2) || may_underflow(a.hi, b.lo, p3) ||
+          may_underflow(a.hi, b.hi, p4))
+        r = {r.lo - 0x1p-1074, r.hi + 0x1p-1074};
+    return r;
+  }
 
   friend Iv operator+(Iv a, Iv b) { return {lower_rel(a.lo + b.lo), upper_rel(a.hi + b.hi)}; }
   friend Iv operator-(Iv a, Iv b) { return {lower_rel(a.lo - b.hi), upper_rel(a.hi - b.lo)}; }
@@ -116,28 +129,14 @@ struct Iv {
     // from infinite products only: unbounded either way.
     if (std::isnan(p1 + p2 + p3 + p4))
       return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-    const double mn = std::min(std::min(p1, p2), std::min(p3, p4));
-    const double mx = std::max(std::max(p1, p2), std::max(p3, p4));
-    Iv r{lower_rel(mn), upper_rel(mx)};
-    if (!(std::fabs(mn) >= 0x1p-1022) || !(std::fabs(mx) >= 0x1p-1022))
-      if (may_underflow(a.lo, b.lo, p1) || may_underflow(a.lo, b.hi, p2) || may_underflow(a.hi, b.lo, p3) ||
-          may_underflow(a.hi, b.hi, p4))
-        r = {r.lo - 0x1p-1074, r.hi + 0x1p-1074};
-    return r;
+    return from_corners(a, b, p1, p2, p3, p4);
   }
   // Division by an interval that excludes zero (else NaN: unbounded).
   friend Iv operator/(Iv a, Iv b) {
     if (b.contains_zero())
       return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     const double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo, p4 = a.hi / b.hi;
-    const double mn = std::min(std::min(p1, p2), std::min(p3, p4));
-    const double mx = std::max(std::max(p1, p2), std::max(p3, p4));
-    Iv r{lower_rel(mn), upper_rel(mx)};
-    if (!(std::fabs(mn) >= 0x1p-1022) || !(std::fabs(mx) >= 0x1p-1022))
-      if (may_underflow(a.lo, b.lo, p1) || may_underflow(a.lo, b.hi, p2) || may_underflow(a.hi, b.lo, p3) ||
-          may_underflow(a.hi, b.hi, p4))
-        r = {r.lo - 0x1p-1074, r.hi + 0x1p-1074};
-    return r;
+    return from_corners(a, b, p1, p2, p3, p4);
   }
   // Square: non-negative enclosure.
   // No sign branch (it mispredicted): the least |x| on [lo, hi] is
