@@ -5,6 +5,7 @@
 #include <boost/multiprecision/gmp.hpp>
 #include <climits>
 #include <cmath>
+#include <stdexcept>
 #include <cstdint>
 
 #include "predicates/determinants.hpp"
@@ -23,6 +24,9 @@ struct Dyadic {
 
 Dyadic split(double x) {
   if (x == 0) return {};
+  // Predicates are defined on finite coordinates only (every reader rejects
+  // the others); a non-finite one would make the conversion below undefined.
+  if (!std::isfinite(x)) throw std::domain_error("mp kernel: a non-finite coordinate");
   int e = 0;
   const double f = std::frexp(x, &e);  // x = f 2^e, 0.5 <= |f| < 1, exact
   const auto m = static_cast<std::int64_t>(std::ldexp(f, 53));

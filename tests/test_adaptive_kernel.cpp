@@ -41,7 +41,8 @@ struct Rng {
   int range(int lo, int hi) { return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1)); }
   double dbl(int elo, int ehi) {
     const double m = 1.0 + unit();
-    return ((g() & 1) ? -1.0 : 1.0) * std::ldexp(m, range(elo, ehi));
+    // Exponents above 1023 would give infinities: predicates take finite coordinates.
+    return ((g() & 1) ? -1.0 : 1.0) * std::ldexp(m, std::min(range(elo, ehi), 1023));
   }
 };
 

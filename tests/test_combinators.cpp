@@ -63,7 +63,11 @@ std::array<Point<D>, N> sample(Rng& rng, int family) {
     p = sample<D, N>(rng, 1 + rng.below(2));
     for (int i = 0; i < D; ++i) {
       const int e = rng.range(-300, 300);
-      for (auto& q : p) q[i] = std::ldexp(q[i], e);
+      // Predicates take finite coordinates: an axis that would overflow keeps its scale.
+      bool finite = true;
+      for (const auto& q : p) finite = finite && std::isfinite(std::ldexp(q[i], e));
+      if (finite)
+        for (auto& q : p) q[i] = std::ldexp(q[i], e);
     }
     return p;
   }
