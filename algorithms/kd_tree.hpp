@@ -15,13 +15,15 @@
 //   every point of a node has its (real) scaled coordinates inside the node's
 //   box [lo, hi] on each axis.
 // The boxes are unions of the enclosures scaled_iv() of the points' scaled
-// coordinates. Coordinates are scaled by a power of two (max |coordinate|
-// about 1), exact unless the product underflows, and then widened by an ulp.
+// coordinates: translated by an origin where that is exact (see build),
+// then scaled by a power of two (max |coordinate| about 1), exact unless the
+// product underflows, and then widened by an ulp.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -49,9 +51,26 @@ class KdTree {
 
   // Builds the tree on pts[ids[k]] (distinct points, at least one).
   void build(std::span<const Point<D>> pts, const std::vector<std::uint32_t>& ids) {
+    std::array<double, D> mn, mx;
+    mn.fill(std::numeric_limits<double>::infinity());
+    mx.fill(-std::numeric_limits<double>::infinity());
+    for (std::uint32_t id : ids)
+      for (int i = 0; i < D; ++i) mn[i] = std::min(mn[i], pts[id][i]), mx[i] = std::max(mx[i], pts[id][i]);
+    // The origin: on an axis whose points all lie within 2^-8 of their
+    // midpoint m (relative to |m|), m rounded; else 0. Then every x on that
+    // axis is within a factor 2 of m and of the same sign, so x - m is exact
+    // (Sterbenz's lemma). Without it, consecutive doubles far from zero
+    // (half-integers near 2^52, binade-doubles) scale to enclosures as wide
+    // as their spacing and nothing is pruned.
+    for (int i = 0; i < D; ++i) {
+      origin_[i] = 0;
+      if (ids.empty()) continue;
+      const double m = mn[i] / 2 + mx[i] / 2;
+      if (mx[i] - mn[i] <= std::fabs(m) * 0x1p-8) origin_[i] = m;  // mixed signs: spread >= 2 |m|
+    }
     double big = 0;
     for (std::uint32_t id : ids)
-      for (int i = 0; i < D; ++i) big = std::max(big, std::fabs(pts[id][i]));
+      for (int i = 0; i < D; ++i) big = std::max(big, std::fabs(pts[id][i] - origin_[i]));
     int e = 0;
     if (big > 0) std::frexp(big, &e);
     // big * scale_ in [0.5, 1), or as close as a representable power of two
@@ -66,12 +85,19 @@ class KdTree {
     for (std::size_t k = 0; k < items_.size(); ++k) coords_[k] = pts[items_[k]];
   }
 
-  // An enclosure of x * scale (exact unless it underflows).
-  Iv scaled_iv(double x) const {
-    const double v = x * scale_;
-    if (std::fabs(v) >= 0x1p-1000 || (v == 0.0 && x == 0.0)) return Iv::exact(v);
+  // An enclosure of (x - origin) * scale for a coordinate x on `axis` of a
+  // point given to build(): the difference is exact (see build), the product
+  // exact unless it underflows.
+  Iv scaled_iv(double x, int axis) const {
+    const double d = x - origin_[axis];
+    const double v = d * scale_;
+    if (std::fabs(v) >= 0x1p-1000 || d == 0.0) return Iv::exact(v);
     return {Iv::down(v), Iv::up(v)};
   }
+
+  // The translation and the scale of scaled_iv (for tests).
+  double origin(int axis) const { return origin_[axis]; }
+  double scale() const { return scale_; }
 
   static constexpr std::uint32_t root() { return 0; }
   const Node& node(std::uint32_t k) const { return nodes_[k]; }
@@ -102,7 +128,7 @@ class KdTree {
     n.parent = parent;
     for (std::uint32_t s = b; s < e; ++s)
       for (int i = 0; i < D; ++i) {
-        const Iv v = scaled_iv(pts[items_[s]][i]);
+        const Iv v = scaled_iv(pts[items_[s]][i], i);
         n.lo[i] = s == b ? v.lo : std::min(n.lo[i], v.lo);
         n.hi[i] = s == b ? v.hi : std::max(n.hi[i], v.hi);
       }
@@ -127,6 +153,7 @@ class KdTree {
     return k;
   }
 
+  std::array<double, D> origin_{};
   double scale_ = 1;
   std::vector<Node> nodes_;  // preorder: a node's left child follows it
   std::vector<std::uint32_t> items_, leaf_of_;

@@ -253,12 +253,12 @@ void Tanemura<K, D>::make_pencil() {
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
   std::array<Iv, D> c;
   if constexpr (D == 2) {
-    for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[base_[1]][i]) - f0_[i]) * Iv{0.5, 0.5};
+    for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[base_[1]][i], i) - f0_[i]) * Iv{0.5, 0.5};
   } else {
     std::array<Iv, 3> u, v;
     for (int i = 0; i < 3; ++i) {
-      u[i] = tree_.scaled_iv(pts_[base_[1]][i]) - f0_[i];
-      v[i] = tree_.scaled_iv(pts_[base_[2]][i]) - f0_[i];
+      u[i] = tree_.scaled_iv(pts_[base_[1]][i], i) - f0_[i];
+      v[i] = tree_.scaled_iv(pts_[base_[2]][i], i) - f0_[i];
     }
     const auto cross = [](const std::array<Iv, 3>& x, const std::array<Iv, 3>& y) {
       return std::array<Iv, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
@@ -302,7 +302,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
     if (const double dj = l1(pts_[c], pts_[base_[j]]); dj < near) near = dj, k = j;
   Iv num{0, 0}, cross{0, 0}, den{0, 0};
   for (int i = 0; i < D; ++i) {
-    const Iv e = tree_.scaled_iv(pts_[c][i]) - bq_[k][i];
+    const Iv e = tree_.scaled_iv(pts_[c][i], i) - bq_[k][i];
     num = num + sq(e);
     cross = cross + e * vc_[k][i];
     den = den + nrm_[i] * e;
@@ -408,7 +408,7 @@ template <class K, int D>
 bool Tanemura<K, D>::point_may_be_in_ball(const Point<D>& p) const {
   std::array<double, D> x;
   for (int i = 0; i < D; ++i) {
-    const Iv v = tree_.scaled_iv(p[i]);
+    const Iv v = tree_.scaled_iv(p[i], i);
     if (v.lo != v.hi) return true;  // underflowed scaling: do not prune
     x[i] = v.lo;
   }
@@ -531,7 +531,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   std::rotate(base_.begin(), base_.begin() + near_f_at_, base_.end());
   std::array<std::array<Iv, D>, D> q;
   for (int j = 0; j < D; ++j)
-    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[base_[j]][i]);
+    for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[base_[j]][i], i);
   f0_ = q[0];
   bq_ = q;
   if constexpr (D == 2) {

@@ -1,0 +1,129 @@
+// The Tanemura search tree (algorithms/kd_tree.hpp), checked in exact
+// rational arithmetic:
+//   - every node's box encloses the translated, scaled coordinates
+//     (x - origin) * scale of each of its points: the guarantee every prune
+//     relies on;
+//   - scaled_iv is a point interval exactly when it claims to be (the
+//     translation's difference is exact by Sterbenz's lemma: build's 2^-8
+//     rule), on sets far from zero at binade edges, extreme doubles, and
+//     sets just inside and just outside the translation rule;
+//   - the translation keeps the search pruned on consecutive doubles far from
+//     zero (half-integers near 2^52, binade-doubles near 2^1000), where the
+//     untranslated enclosures were as wide as the spacing.
+#include <boost/multiprecision/gmp.hpp>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "algorithms/kd_tree.hpp"
+#include "fuzz/binade_edges.hpp"
+#include "fuzz/generators.hpp"
+#include "tests/cgal_oracle.hpp"  // canonical_simplices only (header part; no CGAL here)
+#include "variants/run.hpp"
+
+using namespace dlab;
+
+namespace {
+
+using Q = boost::multiprecision::mpq_rational;
+
+// Every box encloses its points' exact scaled coordinates, and every point
+// interval of scaled_iv is the exact value. Returns the translated axes.
+template <int D>
+int check_tree(const std::vector<Point<D>>& pts) {
+  std::vector<std::uint32_t> ids(pts.size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  KdTree<D> tree;
+  tree.build(pts, ids);
+  int translated = 0;
+  for (int i = 0; i < D; ++i) translated += tree.origin(i) != 0;
+  for (std::size_t k = 0; k < tree.node_count(); ++k) {
+    const auto& n = tree.node(static_cast<std::uint32_t>(k));
+    for (std::uint32_t s = n.begin; s < n.end; ++s)
+      for (int i = 0; i < D; ++i) {
+        const double x = tree.coords(s)[i];
+        const Q exact = (Q(x) - Q(tree.origin(i))) * Q(tree.scale());
+        INFO("x " << x << " origin " << tree.origin(i) << " scale " << tree.scale());
+        REQUIRE(Q(n.lo[i]) <= exact);
+        REQUIRE(exact <= Q(n.hi[i]));
+        const Iv v = tree.scaled_iv(x, i);
+        REQUIRE(Q(v.lo) <= exact);
+        REQUIRE(exact <= Q(v.hi));
+        if (v.lo == v.hi) REQUIRE(Q(v.lo) == exact);
+      }
+  }
+  return translated;
+}
+
+std::uint64_t counter(const RunResult& r, const std::string& name) {
+  for (const auto& [k, v] : r.counters)
+    if (k == name) return v;
+  FAIL("no counter " << name);
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[kd_tree]") {
+  // Far from zero at binade edges, both signs: translated on every axis.
+  for (const int e : {-1021, -1, 0, 1, 51, 52, 53, 1000, 1023}) {
+    INFO("edge 2^" << e);
+    CHECK(check_tree<2>(gen::binade_doubles<2>(900, e, {1, -1})) == 2);
+    CHECK(check_tree<3>(gen::binade_doubles<3>(1000, e, {-1, 1, -1})) == 3);
+    CHECK(check_tree<3>(gen::binade_lattice<3>(1000, e, std::max(e - 52, -1074), {1, 1, -1})) == 3);
+  }
+  for (const double c : {0x1p51, -0x1p51, 0x1p52, -0x1p53})
+    CHECK(check_tree<3>(gen::half_integers<3>(1000, 3, {c, -c, c})) == 3);
+  // Subnormal edges: the window crosses or touches zero: no translation.
+  CHECK(check_tree<2>(gen::binade_doubles<2>(900, -1074, {1, 1})) == 0);
+  // Extreme doubles (DBL_MAX beside subnormals, both signs) and uniform [0, 1]
+  // (translating it by 0.5 would make inexact differences): not translated.
+  CHECK(check_tree<2>(gen::extreme_doubles<2>(2000, 1)) == 0);
+  CHECK(check_tree<3>(gen::extreme_doubles<3>(2000, 2)) == 0);
+  CHECK(check_tree<3>(gen::uniform<3>(2000, 3)) == 0);
+  // Full 53-bit mantissas in [2^-4, 1): x - 0.5 would round for most x.
+  std::mt19937_64 g(5);
+  std::vector<Point3> full;
+  for (int k = 0; k < 2000; ++k) {
+    Point3 p;
+    for (int i = 0; i < 3; ++i) p[i] = std::ldexp(1 + static_cast<double>(g() >> 12) * 0x1p-52, -1 - static_cast<int>(g() % 4));
+    full.push_back(p);
+  }
+  CHECK(check_tree<3>(full) == 0);
+  // The rule's edge: a spread of 2^-8 |m| is translated, a little more is not.
+  // Points m (1 +- 2^-9) and consecutive doubles between, at 1000 random mantissas.
+  for (const double m : {3.0, -5.0, 0x1.234p-700, 0x1.fffffffffffffp1000}) {
+    const double lo = m - std::fabs(m) * 0x1p-9, hi = m + std::fabs(m) * 0x1p-9;
+    std::vector<Point2> in{{lo, m}, {hi, m}, {m, lo}, {m, hi}};
+    double x = lo;
+    for (int k = 0; k < 400; ++k) in.push_back({x = std::nextafter(x, hi), std::nextafter(m, hi)});
+    CHECK(check_tree<2>(in) == 2);
+    std::vector<Point2> out = in;
+    out.push_back({hi + std::fabs(m) * 0x1p-12, m});
+    CHECK(check_tree<2>(out) == 1);
+  }
+}
+
+TEST_CASE("kd-tree: far from zero, the translation keeps the search pruned", "[kd_tree]") {
+  // Before the translation (points examined per facet, x1000): 3D half-integers
+  // near -2^52, n = 2000: 149 775; binade-doubles near 2^1000: 331 376. After:
+  // 25 460 and 27 950.
+  RunOptions o;
+  o.algorithm = "tanemura";
+  for (const auto& pts : {gen::half_integers<3>(2000, 1, {-0x1p52, -0x1p52, -0x1p52}),
+                          gen::binade_doubles<3>(2000, 1000, {1, 1, 1})}) {
+    const PointSet ps = point_set<3>(pts);
+    o.algorithm = "tanemura";
+    const RunResult t = run(ps, o);
+    REQUIRE(t.outcome == RunResult::Outcome::ok);
+    CHECK(counter(t, "points_examined_per_facet_x1000") < 64 * 1000);
+    o.algorithm = "bowyer-watson";
+    const RunResult b = run(ps, o);
+    CHECK(oracle::canonical_simplices<3>(t.simplices) == oracle::canonical_simplices<3>(b.simplices));
+  }
+}
