@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "algorithms/interval.hpp"
+#include "algorithms/node_frame.hpp"
 #include "predicates/point.hpp"
 
 namespace dlab {
@@ -80,6 +81,9 @@ class KdTree {
     leaf_of_.assign(pts.size(), kNoNode);
     nodes_.clear();
     nodes_.reserve(2 * (ids.size() / kLeaf + 1));
+    frame_of_.clear();
+    frame_of_.reserve(nodes_.capacity());
+    frames_.clear();
     if (!items_.empty()) build_node(pts, 0, static_cast<std::uint32_t>(items_.size()), kNoNode);
     coords_.resize(items_.size());
     for (std::size_t k = 0; k < items_.size(); ++k) coords_[k] = pts[items_[k]];
@@ -109,11 +113,18 @@ class KdTree {
   }
   // The leaf that holds point `id` (an id given to build()).
   std::uint32_t leaf_of(std::uint32_t id) const { return leaf_of_[id]; }
+  // The oriented box of node k, if its points are flat and oblique
+  // (algorithms/node_frame.hpp), else null.
+  const NodeFrame<D>* frame(std::uint32_t k) const {
+    return frame_of_[k] == kNoNode ? nullptr : &frames_[frame_of_[k]];
+  }
+  std::size_t frame_count() const { return frames_.size(); }
   std::uint32_t id(std::uint32_t slot) const { return items_[slot]; }
   const Point<D>& coords(std::uint32_t slot) const { return coords_[slot]; }
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t bytes() const {
-    return nodes_.capacity() * sizeof(Node) + items_.capacity() * 4 + leaf_of_.capacity() * 4 +
+    return nodes_.capacity() * sizeof(Node) + frame_of_.capacity() * 4 + frames_.capacity() * sizeof(NodeFrame<D>) +
+           items_.capacity() * 4 + leaf_of_.capacity() * 4 +
            coords_.capacity() * sizeof(Point<D>);
   }
 
@@ -133,8 +144,10 @@ class KdTree {
         n.hi[i] = s == b ? v.hi : std::max(n.hi[i], v.hi);
       }
     nodes_.push_back(n);
+    frame_of_.push_back(kNoNode);
     if (e - b <= kLeaf) {
       for (std::uint32_t s = b; s < e; ++s) leaf_of_[items_[s]] = k;
+      fit_frame(pts, k);
       return k;
     }
     int axis = 0;
@@ -150,12 +163,32 @@ class KdTree {
     build_node(pts, b, m, k);
     const std::uint32_t r = build_node(pts, m, e, k);
     nodes_[k].right = r;
+    // Bottom up: a node is tried only if a child is flat (uniform sets: the
+    // leaves alone; a line or a plane: every node along it).
+    if (frame_of_[k + 1] != kNoNode || frame_of_[r] != kNoNode) fit_frame(pts, k);
     return k;
+  }
+
+  void fit_frame(std::span<const Point<D>> pts, std::uint32_t k) {
+    const Node& n = nodes_[k];
+    scratch_.clear();
+    for (std::uint32_t s = n.begin; s < n.end; ++s) {
+      std::array<Iv, D> x;
+      for (int i = 0; i < D; ++i) x[i] = scaled_iv(pts[items_[s]][i], i);
+      scratch_.push_back(x);
+    }
+    if (auto fr = NodeFrame<D>::fit(scratch_, n.lo, n.hi)) {
+      frame_of_[k] = static_cast<std::uint32_t>(frames_.size());
+      frames_.push_back(*fr);
+    }
   }
 
   std::array<double, D> origin_{};
   double scale_ = 1;
   std::vector<Node> nodes_;  // preorder: a node's left child follows it
+  std::vector<std::uint32_t> frame_of_;  // per node: its index in frames_, or kNoNode
+  std::vector<NodeFrame<D>> frames_;
+  std::vector<std::array<Iv, D>> scratch_;  // build: a node's scaled points
   std::vector<std::uint32_t> items_, leaf_of_;
   std::vector<Point<D>> coords_;
 };

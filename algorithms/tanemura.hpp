@@ -181,9 +181,10 @@ class Tanemura {
   // Examines the points of a leaf; then the ball follows the best candidate.
   void scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf);
   void refresh_ball();  // ball_ for best_ if it is stale
-  // Visits the subtree of node k, pruned, the child nearer target_ first;
-  // with skip_first_leaves, not the leaves in first_leaves_ (scanned already).
-  void visit(const Facet& f, std::uint32_t k, bool skip_first_leaves);
+  // Visits the subtree of node k, pruned, the child nearer target_ first,
+  // except the nodes visited already by this search (done_: a pruned node
+  // stays prunable, as the ball only shrinks on the open side).
+  void visit(const Facet& f, std::uint32_t k);
   double distance2_to_target(const typename KdTree<D>::Node& n) const;
 
   K k_;
@@ -225,7 +226,9 @@ class Tanemura {
   std::array<std::uint64_t, D> outer_hi_{};  // all ones: the upper end (a bit mask: no branch)
   std::array<double, D> outer_f0_{};
   bool outer_mixed_ = false;
-  std::array<std::uint32_t, D> first_leaves_{};  // the leaves of the facet's vertices
+  // done_[k] == stamp_: node k's subtree was visited by this search.
+  std::vector<std::uint32_t> done_;
+  std::uint32_t stamp_ = 0;
   std::uint32_t best_ = kNone;
   // An enclosure of the circumsphere of (f, b) for best_ or an earlier best b
   // of this search (valid: there is one; stale: best_ has moved since, within
@@ -462,22 +465,22 @@ double Tanemura<K, D>::distance2_to_target(const typename KdTree<D>::Node& n) co
 }
 
 template <class K, int D>
-void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k, bool skip_first_leaves) {
+void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
+  if (done_[k] == stamp_) return;
+  done_[k] = stamp_;
   const typename KdTree<D>::Node& n = tree_.node(k);
   ++nodes_visited_;
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (!box_may_be_outer_fast(n.lo, n.hi)) return;
-  if (KdTree<D>::is_leaf(n)) {
-    if (skip_first_leaves)
-      for (int j = 0; j < D; ++j)
-        if (first_leaves_[j] == k) return;
-    return scan_leaf(f, n);
-  }
+  // Flat oblique points (fans off a line or plane): their oriented box.
+  if (ball_valid_ && ball_.bounded)
+    if (const NodeFrame<D>* fr = tree_.frame(k); fr && !fr->may_meet_ball(ball_.centre, ball_.r2_prune)) return;
+  if (KdTree<D>::is_leaf(n)) return scan_leaf(f, n);
   std::uint32_t a = tree_.left(k), b = n.right;
   if (distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a))) std::swap(a, b);
-  visit(f, a, skip_first_leaves);
-  visit(f, b, skip_first_leaves);  // recursion depth: the tree's, about log2(n / kLeaf)
+  visit(f, a);
+  visit(f, b);  // recursion depth: the tree's, about log2(n / kLeaf)
 }
 
 template <class K, int D>
@@ -552,18 +555,20 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   }
   // First the leaves of the facet's vertices (the apex is usually near one of
   // them: a fan of long facets, as on collinear sets, finds it beside the
-  // near vertex); then bottom-up from the leaf of f[0], each sibling on the
-  // way to the root. Every node is visited or pruned: the search is
-  // exhaustive. The vertices' leaves are not scanned twice.
-  // The ball follows the best of all these leaves (one computation, not one
-  // per leaf that improved it).
-  for (int j = 0; j < D; ++j) first_leaves_[j] = tree_.leaf_of(f[j]);
-  defer_ball_ = true;
-  for (int j = 0; j < D; ++j) {
-    bool seen = false;
-    for (int i = 0; i < j; ++i) seen |= first_leaves_[i] == first_leaves_[j];
-    if (!seen) visit(f, first_leaves_[j], false);
+  // near vertex), one ball for the best of them; then the climbs from each
+  // vertex's leaf to the root, one level at a time for all vertices in turn,
+  // visiting the sibling subtree on the way. A long facet's apex may lie
+  // beside either end, just across a split: in a fan off a line (or plane),
+  // climbing from the far end alone improved the best leaf by leaf along the
+  // whole line, and the balls of apices with their centre on the closed side
+  // are huge. Every node is visited or pruned: the search is exhaustive; no
+  // subtree is visited twice (done_).
+  if (++stamp_ == 0) {  // wrapped: no node may look done
+    std::fill(done_.begin(), done_.end(), 0u);
+    stamp_ = 1;
   }
+  defer_ball_ = true;
+  for (int j = 0; j < D; ++j) visit(f, tree_.leaf_of(f[j]));
   defer_ball_ = false;
   // No candidate near f: f may be a hull facet. On a hull plane found before
   // (a lattice's face: all its points are coplanar, so the climb would visit
@@ -577,10 +582,22 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
     }
   }
   refresh_ball();
-  std::uint32_t k = first_leaves_[0];
-  while (k != KdTree<D>::root()) {
-    visit(f, tree_.sibling(k), true);
-    k = tree_.node(k).parent;
+  // Climb from every vertex's leaf together, one level at a time; two climbs
+  // that meet go on as one.
+  std::array<std::uint32_t, D> at;
+  int climbs = 0;
+  for (int j = 0; j < D; ++j) at[climbs++] = tree_.leaf_of(f[j]);
+  for (;;) {
+    for (int j = climbs - 1; j >= 0; --j) {
+      bool ends = at[j] == KdTree<D>::root();
+      for (int i = 0; i < j; ++i) ends |= at[i] == at[j];
+      if (ends) at[j] = at[--climbs];
+    }
+    if (climbs == 0) break;
+    for (int j = 0; j < climbs; ++j) {
+      visit(f, tree_.sibling(at[j]));
+      at[j] = tree_.node(at[j]).parent;
+    }
   }
   return best_;
 }
@@ -662,6 +679,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     if (D == 3) max_simplices_ = std::min<std::uint64_t>(max_simplices_, 64 * nu + 1024);
 
   tree_.build(pts, uniq);
+  done_.assign(tree_.node_count(), 0u);
   if constexpr (K::exact) plane_of_.assign(n, kNone);
   out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 

@@ -1,0 +1,191 @@
+// An oriented bounding box for a node of the search tree (algorithms/kd_tree.hpp)
+// whose points are flat: on a line (2D, 3D) or a plane (3D) oblique to the
+// axes. Their axis-aligned box is as thick as it is long, so it meets every
+// large sphere that passes near the line or plane: the fans of a few points
+// off a line or plane (dlab gen collinear, coplanar) have circumspheres of
+// radius about L^2 / h hugging it, and the box-pruned Tanemura search examined
+// every point (issue 17 section 3; papers/triangulation_costs.md). In a frame
+// fitted to the points the box is as thin as they are. Oriented boxes in
+// bounding-volume hierarchies: Gottschalk, Lin, Manocha, "OBBTree", SIGGRAPH
+// 1996; the frame here is the cheap extreme-point fit, not PCA.
+//
+// Soundness (the frame only PRUNES, like the tree): the rows u_k need not be
+// orthonormal. For every point x of the node, y = U x lies in [lo, hi]
+// (enclosures), and for any c, |U (x - c)|^2 <= s |x - c|^2 with s any upper
+// bound of the largest eigenvalue of U U^T; Gershgorin's theorem gives s =
+// max_k sum_j |u_k . u_j|, bounded above with intervals. So if the squared
+// distance between [lo, hi] and an enclosure of U c exceeds s r^2, no point
+// of the node is within r of c.
+#pragma once
+#include <array>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "algorithms/interval.hpp"
+
+namespace dlab {
+
+template <int D>
+struct NodeFrame {
+  std::array<std::array<double, D>, D> u;  // rows: an almost orthonormal basis
+  std::array<double, D> lo, hi;            // enclosure of u_k . x over the node's points
+  double s_prune;                          // Gershgorin bound s, times 1 + 2^-44 (see may_meet_ball)
+
+  // A frame for points given by their coordinate enclosures, worth keeping
+  // only if its thinnest extent is at most 1/16 of the thinnest extent of
+  // their axis-aligned box [box_lo, box_hi] (else nothing: the axis box prunes
+  // about as well, and the frame test costs D^2 interval products).
+  static std::optional<NodeFrame> fit(const std::vector<std::array<Iv, D>>& pts,
+                                      const std::array<double, D>& box_lo,
+                                      const std::array<double, D>& box_hi);
+
+  // The frame with rows u (any finite, independent rows: the bound s makes
+  // the test sound whatever their angles), its box over pts and s.
+  static std::optional<NodeFrame> make(const std::vector<std::array<Iv, D>>& pts,
+                                       const std::array<std::array<double, D>, D>& u);
+
+  // False only if no point of the node is within the ball of squared radius
+  // at most r2_prune / (1 + 2^-44) around a centre in `centre` (the
+  // tree's ball test's convention: r2_prune = r2 (1 + 2^-44) + 2^-1000).
+  bool may_meet_ball(const std::array<Iv, D>& centre, double r2_prune) const;
+};
+
+namespace node_frame_detail {
+
+template <int D>
+double dot(const std::array<double, D>& a, const std::array<double, D>& b) {
+  double s = 0;
+  for (int i = 0; i < D; ++i) s += a[i] * b[i];
+  return s;
+}
+
+template <int D>
+std::array<double, D> unit(std::array<double, D> a) {
+  const double n = std::sqrt(dot<D>(a, a));
+  for (double& x : a) x /= n;
+  return a;
+}
+
+inline std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+}  // namespace node_frame_detail
+
+template <int D>
+std::optional<NodeFrame<D>> NodeFrame<D>::fit(const std::vector<std::array<Iv, D>>& pts,
+                                              const std::array<double, D>& box_lo,
+                                              const std::array<double, D>& box_hi) {
+  using namespace node_frame_detail;
+  if (pts.size() < 2) return std::nullopt;
+  // The direction: between the extreme points along the widest axis (plain
+  // doubles, lower ends: the choice of frame needs no rigour).
+  int axis = 0;
+  double thin_axis = box_hi[0] - box_lo[0];
+  for (int i = 1; i < D; ++i) {
+    if (box_hi[i] - box_lo[i] > box_hi[axis] - box_lo[axis]) axis = i;
+    thin_axis = std::min(thin_axis, box_hi[i] - box_lo[i]);
+  }
+  if (!(thin_axis > 0) || !std::isfinite(thin_axis)) return std::nullopt;  // flat on an axis already
+  std::size_t a = 0, b = 0;
+  for (std::size_t k = 1; k < pts.size(); ++k) {
+    if (pts[k][axis].lo < pts[a][axis].lo) a = k;
+    if (pts[k][axis].lo > pts[b][axis].lo) b = k;
+  }
+  std::array<double, D> d;
+  for (int i = 0; i < D; ++i) d[i] = pts[b][i].lo - pts[a][i].lo;
+  NodeFrame f;
+  f.u[0] = unit<D>(d);
+  if constexpr (D == 2) {
+    f.u[1] = {-f.u[0][1], f.u[0][0]};
+  } else {
+    // The normal: from the point farthest from the line, unless the points
+    // are (nearly) collinear; then any direction off the line.
+    double far = 0;
+    std::array<double, 3> n{};
+    for (const auto& p : pts) {
+      const std::array<double, 3> c = cross(f.u[0], {p[0].lo - pts[a][0].lo, p[1].lo - pts[a][1].lo,
+                                                     p[2].lo - pts[a][2].lo});
+      if (const double c2 = dot<3>(c, c); c2 > far) far = c2, n = c;
+    }
+    if (!(far > 0x1p-60 * dot<3>(d, d))) {
+      int k = 0;
+      for (int i = 1; i < 3; ++i)
+        if (std::fabs(f.u[0][i]) < std::fabs(f.u[0][k])) k = i;
+      std::array<double, 3> e{};
+      e[k] = 1;
+      n = cross(f.u[0], e);
+    }
+    f.u[2] = unit<3>(n);
+    f.u[1] = unit<3>(cross(f.u[2], f.u[0]));
+  }
+  for (int k = 0; k < D; ++k)
+    if (!std::isfinite(dot<D>(f.u[k], f.u[k]))) return std::nullopt;
+  // Worth it? First in plain doubles (most nodes stop here).
+  double lo[D], hi[D];
+  for (std::size_t m = 0; m < pts.size(); ++m)
+    for (int k = 0; k < D; ++k) {
+      double y = 0;
+      for (int i = 0; i < D; ++i) y += f.u[k][i] * pts[m][i].lo;
+      lo[k] = m == 0 ? y : std::min(lo[k], y);
+      hi[k] = m == 0 ? y : std::max(hi[k], y);
+    }
+  double thin = hi[0] - lo[0];
+  for (int k = 1; k < D; ++k) thin = std::min(thin, hi[k] - lo[k]);
+  if (!(thin * 16 <= thin_axis)) return std::nullopt;
+  auto made = make(pts, f.u);
+  if (!made) return std::nullopt;
+  thin = made->hi[0] - made->lo[0];
+  for (int k = 1; k < D; ++k) thin = std::min(thin, made->hi[k] - made->lo[k]);
+  if (!(thin * 16 <= thin_axis)) return std::nullopt;
+  return made;
+}
+
+template <int D>
+std::optional<NodeFrame<D>> NodeFrame<D>::make(const std::vector<std::array<Iv, D>>& pts,
+                                               const std::array<std::array<double, D>, D>& u) {
+  NodeFrame f;
+  f.u = u;
+  // The box in the frame: enclosures of u_k . x.
+  for (std::size_t m = 0; m < pts.size(); ++m)
+    for (int k = 0; k < D; ++k) {
+      Iv y{0, 0};
+      for (int i = 0; i < D; ++i) y = y + Iv::exact(u[k][i]) * pts[m][i];
+      if (!y.bounded()) return std::nullopt;
+      f.lo[k] = m == 0 ? y.lo : std::min(f.lo[k], y.lo);
+      f.hi[k] = m == 0 ? y.hi : std::max(f.hi[k], y.hi);
+    }
+  // Gershgorin on the Gram matrix U U^T, rounded upwards.
+  double s = 0;
+  for (int k = 0; k < D; ++k) {
+    Iv row{0, 0};
+    for (int j = 0; j < D; ++j) {
+      Iv g{0, 0};
+      for (int i = 0; i < D; ++i) g = g + Iv::exact(u[k][i]) * Iv::exact(u[j][i]);
+      row = row + Iv::exact(std::max(std::fabs(g.lo), std::fabs(g.hi)));
+    }
+    s = std::max(s, row.hi);
+  }
+  // Slack for the one rounding of r2_prune * s_prune in may_meet_ball.
+  f.s_prune = Iv::upper_rel(s * (1 + 0x1p-44));
+  if (!std::isfinite(f.s_prune) || pts.empty()) return std::nullopt;
+  return f;
+}
+
+template <int D>
+bool NodeFrame<D>::may_meet_ball(const std::array<Iv, D>& centre, double r2_prune) const {
+  // Squared distance between the frame box and an enclosure of U c, in plain
+  // doubles: the same few roundings as the axis box test (kd_tree users'
+  // r2_prune slack absorbs them); s_prune carries the product's rounding.
+  double d2 = 0;
+  for (int k = 0; k < D; ++k) {
+    Iv y{0, 0};
+    for (int i = 0; i < D; ++i) y = y + Iv::exact(u[k][i]) * centre[i];
+    const double g = std::max(0.0, std::max(lo[k] - y.hi, y.lo - hi[k]));
+    d2 += g * g;
+  }
+  return !(d2 > r2_prune * s_prune);  // NaN: keep
+}
+
+}  // namespace dlab
