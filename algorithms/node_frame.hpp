@@ -19,6 +19,7 @@
 #pragma once
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -31,6 +32,8 @@ struct NodeFrame {
   std::array<std::array<double, D>, D> u;  // rows: an almost orthonormal basis
   std::array<double, D> lo, hi;            // enclosure of u_k . x over the node's points
   double s_prune;                          // Gershgorin bound s, times 1 + 2^-44 (see may_meet_ball)
+  double inv_s;                            // a lower bound of 1 / s
+  double skew;                             // 2 eta (see may_hold_inside), or infinity
 
   // A frame for points given by their coordinate enclosures, worth keeping
   // only if its thinnest extent is at most 1/16 of the thinnest extent of
@@ -48,7 +51,23 @@ struct NodeFrame {
   // False only if no point of the node is within the ball of squared radius
   // at most r2_prune / (1 + 2^-44) around a centre in `centre` (the
   // tree's ball test's convention: r2_prune = r2 (1 + 2^-44) + 2^-1000).
-  bool may_meet_ball(const std::array<Iv, D>& centre, double r2_prune) const;
+  [[gnu::flatten]] bool may_meet_ball(const std::array<Iv, D>& centre, double r2_prune) const;
+
+  // The same question for a ball far larger than the node, asked without
+  // its radius: with v on the sphere and w = 2 (v - c), a point x is inside
+  // iff g(x) = |x - v|^2 + w . (x - v) < 0 (as |x - c|^2 - r^2 = g(x)), whose
+  // terms are of the size of |x - v| |w| and |x - v|^2 instead of r^2: the
+  // radius test's slack, r^2 2^-44, was wider than the gap between a line
+  // and the huge circles of a fan off it. False only if g > 0 on the node,
+  // for every v in `v` and w in `w` with |w| <= w_norm. In the frame, z =
+  // U (x - v) lies in [lo - U v, hi - U v]; |x - v|^2 >= |z|^2 / s; and w .
+  // (x - v) = w' . z with w' = U^-T w, |w' - U w| <= |U^-T| |I - U^T U| |w|
+  // <= eta / sqrt(1 - eta) |w| <= 2 eta |w| for eta <= 1/2, eta a
+  // Gershgorin bound of |I - U U^T| (the same norm as |I - U^T U|). So g is
+  // at least a sum over k of one-variable quadratics, each bounded below
+  // exactly (its vertex or an end), in interval arithmetic.
+  [[gnu::flatten]] bool may_hold_inside(const std::array<Iv, D>& v, const std::array<Iv, D>& w,
+                                        double w_norm) const;
 };
 
 namespace node_frame_detail {
@@ -169,7 +188,20 @@ std::optional<NodeFrame<D>> NodeFrame<D>::make(const std::vector<std::array<Iv, 
   }
   // Slack for the one rounding of r2_prune * s_prune in may_meet_ball.
   f.s_prune = Iv::upper_rel(s * (1 + 0x1p-44));
-  if (!std::isfinite(f.s_prune) || pts.empty()) return std::nullopt;
+  if (!std::isfinite(f.s_prune) || !(s > 0) || pts.empty()) return std::nullopt;
+  f.inv_s = (Iv::exact(1) / Iv::exact(s)).lo;
+  // eta: Gershgorin on I - U U^T.
+  double eta = 0;
+  for (int k = 0; k < D; ++k) {
+    Iv row{0, 0};
+    for (int j = 0; j < D; ++j) {
+      Iv g{k == j ? -1.0 : 0.0, k == j ? -1.0 : 0.0};
+      for (int i = 0; i < D; ++i) g = g + Iv::exact(u[k][i]) * Iv::exact(u[j][i]);
+      row = row + Iv::exact(std::max(std::fabs(g.lo), std::fabs(g.hi)));
+    }
+    eta = std::max(eta, row.hi);
+  }
+  f.skew = eta <= 0.5 ? Iv::upper_rel(2 * eta) : std::numeric_limits<double>::infinity();
   return f;
 }
 
@@ -186,6 +218,52 @@ bool NodeFrame<D>::may_meet_ball(const std::array<Iv, D>& centre, double r2_prun
     d2 += g * g;
   }
   return !(d2 > r2_prune * s_prune);  // NaN: keep
+}
+
+namespace node_frame_detail {
+
+// A lower bound of min a z^2 + b z over z in [p, q] (a > 0, p <= q): at p if
+// the derivative is >= 0 there, at q if <= 0 there, else the vertex's value
+// -b^2 / (4 a). NaN when unbounded.
+[[gnu::always_inline]] inline double least_of_quadratic(double a, double b, double p, double q) {
+  const Iv A = Iv::exact(a), B = Iv::exact(b), P = Iv::exact(p), Q = Iv::exact(q), two = Iv::exact(2);
+  const auto at = [&](const Iv& z) { return (A * sq(z) + B * z).lo; };
+  if ((two * A * P + B).lo >= 0) return at(P);
+  if ((two * A * Q + B).hi <= 0) return at(Q);
+  return (Iv{0, 0} - sq(B) / (A * Iv::exact(4))).lo;
+}
+
+}  // namespace node_frame_detail
+
+template <int D>
+bool NodeFrame<D>::may_hold_inside(const std::array<Iv, D>& v, const std::array<Iv, D>& w,
+                                   double w_norm) const {
+  using node_frame_detail::least_of_quadratic;
+  const double eps = Iv::upper_rel(w_norm * skew);
+  Iv total{0, 0};
+  for (int k = 0; k < D; ++k) {
+    Iv uv{0, 0}, uw{0, 0};
+    for (int i = 0; i < D; ++i) {
+      uv = uv + Iv::exact(u[k][i]) * v[i];
+      uw = uw + Iv::exact(u[k][i]) * w[i];
+    }
+    const double p = (Iv::exact(lo[k]) - uv).lo, q = (Iv::exact(hi[k]) - uv).hi;
+    // w'_k in [uw - eps, uw + eps]: the least of w'_k z is at its lower end
+    // for z >= 0, at its upper end for z <= 0.
+    const double b_pos = (uw - Iv::exact(eps)).lo, b_neg = (uw + Iv::exact(eps)).hi;
+    double least;
+    if (q <= 0)
+      least = least_of_quadratic(inv_s, b_neg, p, q);
+    else if (p >= 0)
+      least = least_of_quadratic(inv_s, b_pos, p, q);
+    else
+    {
+      const double l1 = least_of_quadratic(inv_s, b_neg, p, 0), l2 = least_of_quadratic(inv_s, b_pos, 0, q);
+      least = l1 < l2 || std::isnan(l1) ? l1 : l2;  // NaN stays
+    }
+    total = total + Iv::exact(least);
+  }
+  return !(total.lo > 0);  // NaN: keep
 }
 
 }  // namespace dlab

@@ -165,6 +165,12 @@ class Tanemura {
     std::array<Iv, D> centre{};
     double r2 = 0;        // upper bound of the squared radius
     double r2_prune = 0;  // r2 with the slack of box_may_meet_ball
+    // A ball far larger than the facet (r2 > 2^20 R^2) is also tested in the
+    // pencil form (NodeFrame::may_hold_inside): w = 2 (v - centre), v = the
+    // facet vertex base_[0] (on every sphere of the pencil), |w| <= w_norm.
+    bool huge = false;
+    std::array<Iv, D> w{};
+    double w_norm = 0;
   };
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
@@ -323,6 +329,16 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   b.r2 = r2.hi;
   b.r2_prune = r2.hi * (1 + 0x1p-44) + 0x1p-1000;
   b.bounded = true;
+  if (r2.hi > 0x1p20 * fr2_.hi) {
+    // v - centre = (v - C) - T n, with vc_[0] = v - C.
+    Iv w2{0, 0};
+    for (int i = 0; i < D; ++i) {
+      b.w[i] = (vc_[0][i] - T * nrm_[i]) * Iv::exact(2);
+      w2 = w2 + sq(b.w[i]);
+    }
+    b.w_norm = sqrt_up(w2.hi);
+    b.huge = std::isfinite(b.w_norm);
+  }
   return b;
 }
 
@@ -409,6 +425,14 @@ bool Tanemura<K, D>::box_may_meet_ball(const std::array<double, D>& lo,
 
 template <class K, int D>
 bool Tanemura<K, D>::point_may_be_in_ball(const Point<D>& p) const {
+  if (ball_.huge) {  // |p - v|^2 + w . (p - v) > 0: outside (see Ball)
+    Iv g{0, 0};
+    for (int i = 0; i < D; ++i) {
+      const Iv e = tree_.scaled_iv(p[i], i) - f0_[i];
+      g = g + sq(e) + ball_.w[i] * e;
+    }
+    if (g.lo > 0) return false;
+  }
   std::array<double, D> x;
   for (int i = 0; i < D; ++i) {
     const Iv v = tree_.scaled_iv(p[i], i);
@@ -475,7 +499,10 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if (!box_may_be_outer_fast(n.lo, n.hi)) return;
   // Flat oblique points (fans off a line or plane): their oriented box.
   if (ball_valid_ && ball_.bounded)
-    if (const NodeFrame<D>* fr = tree_.frame(k); fr && !fr->may_meet_ball(ball_.centre, ball_.r2_prune)) return;
+    if (const NodeFrame<D>* fr = tree_.frame(k))
+      if (!fr->may_meet_ball(ball_.centre, ball_.r2_prune) ||
+          (ball_.huge && !fr->may_hold_inside(f0_, ball_.w, ball_.w_norm)))
+        return;
   if (KdTree<D>::is_leaf(n)) return scan_leaf(f, n);
   std::uint32_t a = tree_.left(k), b = n.right;
   if (distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a))) std::swap(a, b);

@@ -14,6 +14,10 @@
 //     holds one of its points, for rows far from orthonormal too (its
 //     Gershgorin bound), with balls whose radius is within an ulp of the
 //     nearest point's distance (exact rational distances);
+//   - its pencil-form test (may_hold_inside) never prunes a node with a point
+//     where |x - v|^2 + w . (x - v) <= 0, for spheres through a point of the
+//     node up to rounding and huge w (exact rational values), skewed rows
+//     included (its 2 eta |w| term);
 //   - frames exist on lines and planes oblique to the axes and keep the
 //     search of their fans pruned.
 #include <boost/multiprecision/gmp.hpp>
@@ -209,6 +213,84 @@ TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithm
     }
     CHECK(pruned > 1000);
     CHECK(kept_at_edge > 1000);
+  };
+  run(std::integral_constant<int, 2>{});
+  run(std::integral_constant<int, 3>{});
+}
+
+TEST_CASE("node frame: the pencil-form test never prunes a point inside (rational arithmetic)", "[kd_tree]") {
+  std::mt19937_64 g(23);
+  const auto uni = [&g] { return static_cast<double>(g() >> 11) * 0x1p-53; };
+  auto run = [&]<int D>(std::integral_constant<int, D>) {
+    int pruned = 0, kept = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+      std::array<double, D> a, dir;
+      for (int i = 0; i < D; ++i) a[i] = uni(), dir[i] = uni() - 0.5;
+      const double off = std::ldexp(1.0, -static_cast<int>(g() % 40));
+      std::vector<std::array<Iv, D>> pts;
+      std::vector<std::array<double, D>> raw;
+      for (int m = 0; m < 2 + static_cast<int>(g() % 10); ++m) {
+        const double t = uni();
+        std::array<double, D> x;
+        std::array<Iv, D> xi;
+        for (int i = 0; i < D; ++i) xi[i] = Iv::exact(x[i] = a[i] + t * dir[i] + off * (uni() - 0.5));
+        raw.push_back(x);
+        pts.push_back(xi);
+      }
+      const double skew_scale[] = {1e-9, 0.05, 0.2};
+      std::array<std::array<double, D>, D> u;
+      const double sk = skew_scale[g() % 3];
+      for (int k = 0; k < D; ++k)
+        for (int i = 0; i < D; ++i) u[k][i] = (i == k ? 1.0 : 0.0) + (uni() - 0.5) * sk;
+      std::array<double, D> lo, hi;
+      for (int i = 0; i < D; ++i) {
+        lo[i] = hi[i] = raw[0][i];
+        for (const auto& x : raw) lo[i] = std::min(lo[i], x[i]), hi[i] = std::max(hi[i], x[i]);
+      }
+      std::optional<NodeFrame<D>> fr = g() % 2 ? NodeFrame<D>::fit(pts, lo, hi) : std::nullopt;
+      if (!fr) fr = NodeFrame<D>::make(pts, u);
+      REQUIRE(fr);
+      for (int probe = 0; probe < 20; ++probe) {
+        // v far away or near; w scaled so that g(x*) is about 0 at a point x*.
+        std::array<double, D> v, w0;
+        const double far = std::ldexp(1.0, static_cast<int>(g() % 20));
+        for (int i = 0; i < D; ++i) v[i] = raw[0][i] + far * (uni() - 0.5), w0[i] = uni() - 0.5;
+        const auto& xs = raw[g() % raw.size()];
+        double dd = 0, wd = 0;
+        for (int i = 0; i < D; ++i) dd += (xs[i] - v[i]) * (xs[i] - v[i]), wd += w0[i] * (xs[i] - v[i]);
+        if (wd == 0) continue;
+        const double lambda = -dd / wd * (1 + std::ldexp(uni() - 0.5, -static_cast<int>(g() % 50)));
+        std::array<double, D> w;
+        std::array<Iv, D> vi, wi;
+        double w2 = 0;
+        for (int i = 0; i < D; ++i) {
+          w[i] = lambda * w0[i];
+          w2 += w[i] * w[i];
+          vi[i] = Iv::exact(v[i]);
+          wi[i] = Iv::exact(w[i]);
+        }
+        const bool inside_may = fr->may_hold_inside(vi, wi, sqrt_up(w2 * (1 + 0x1p-50)));
+        Q least = 1;
+        bool first = true;
+        for (const auto& x : raw) {
+          Q gx = 0;
+          for (int i = 0; i < D; ++i) {
+            const Q e = Q(x[i]) - Q(v[i]);
+            gx += e * e + Q(w[i]) * e;
+          }
+          if (first || gx < least) least = gx;
+          first = false;
+        }
+        if (least <= 0) {
+          INFO("least g " << static_cast<double>(least));
+          REQUIRE(inside_may);
+          ++kept;
+        }
+        pruned += !inside_may;
+      }
+    }
+    CHECK(pruned > 300);
+    CHECK(kept > 300);
   };
   run(std::integral_constant<int, 2>{});
   run(std::integral_constant<int, 3>{});
