@@ -68,6 +68,15 @@ struct NodeFrame {
   // exactly (its vertex or an end), in interval arithmetic.
   [[gnu::flatten]] bool may_hold_inside(const std::array<Iv, D>& v, const std::array<Iv, D>& w,
                                         double w_norm) const;
+
+  // False only if n . (x - f0) <= 0 for every point x of the node, for
+  // every f0 in `f0` and n in `n` with |n| <= n_norm: nothing strictly on the
+  // open side of a facet (a hull facet's climb has no ball to prune with).
+  // As above, n . (x - f0) = n' . z with z = U (x - f0) in [lo - U f0,
+  // hi - U f0] and n' = U^-T n within 2 eta |n| of U n: at most the sum over
+  // k of the largest corner of the product of their enclosures.
+  [[gnu::flatten]] bool may_be_outer(const std::array<Iv, D>& f0, const std::array<Iv, D>& n,
+                                     double n_norm) const;
 };
 
 namespace node_frame_detail {
@@ -264,6 +273,22 @@ bool NodeFrame<D>::may_hold_inside(const std::array<Iv, D>& v, const std::array<
     total = total + Iv::exact(least);
   }
   return !(total.lo > 0);  // NaN: keep
+}
+
+template <int D>
+bool NodeFrame<D>::may_be_outer(const std::array<Iv, D>& f0, const std::array<Iv, D>& n, double n_norm) const {
+  const Iv eps = Iv::exact(Iv::upper_rel(n_norm * skew));
+  Iv total{0, 0};
+  for (int k = 0; k < D; ++k) {
+    Iv uf{0, 0}, un{0, 0};
+    for (int i = 0; i < D; ++i) {
+      uf = uf + Iv::exact(u[k][i]) * f0[i];
+      un = un + Iv::exact(u[k][i]) * n[i];
+    }
+    const Iv z{(Iv::exact(lo[k]) - uf).lo, (Iv::exact(hi[k]) - uf).hi};
+    total = total + Iv{(un - eps).lo, (un + eps).hi} * z;
+  }
+  return !(total.hi <= 0);  // NaN: keep
 }
 
 }  // namespace dlab

@@ -227,6 +227,7 @@ class Tanemura {
   Facet base_{};                     // the facet rotated for the enclosures (see search)
   std::array<Iv, D> f0_{};           // scaled base_[0]
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
+  double nrm_norm_ = 0;              // an upper bound of |nrm_|
   bool pencil_ready_ = false;        // nn_, fcen_, fr2_, vc_ computed for this facet
   Iv nn_{};                          // |nrm_|^2
   std::array<Iv, D> fcen_{};         // centre C of the facet's circumcircle (enclosure)
@@ -514,12 +515,16 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (!box_may_be_outer_fast(n.lo, n.hi)) return;
-  // Flat oblique points (fans off a line or plane): their oriented box.
-  if (ball_valid_ && ball_.bounded)
-    if (const NodeFrame<D>* fr = tree_.frame(k))
-      if (!fr->may_meet_ball(ball_.centre, ball_.r2_prune) ||
-          (ball_.huge && !fr->may_hold_inside(f0_, ball_.w, ball_.w_norm)))
-        return;
+  // Flat oblique points (fans off a line or plane): their oriented box; the
+  // outer side there only while there is no ball (a hull facet's climb).
+  if (const NodeFrame<D>* fr = tree_.frame(k)) {
+    if (!(ball_valid_ && ball_.bounded)) {
+      if (!fr->may_be_outer(f0_, nrm_, nrm_norm_)) return;
+    } else if (!fr->may_meet_ball(ball_.centre, ball_.r2_prune) ||
+               (ball_.huge && !fr->may_hold_inside(f0_, ball_.w, ball_.w_norm))) {
+      return;
+    }
+  }
   if (KdTree<D>::is_leaf(n)) {
     if constexpr (W == Walk::one_climb)
       for (int j = 0; j < D; ++j)
@@ -597,6 +602,9 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   }
   pencil_ready_ = false;
   set_outer_corners();
+  Iv nn{0, 0};
+  for (int i = 0; i < D; ++i) nn = nn + sq(nrm_[i]);
+  nrm_norm_ = sqrt_up(nn.hi);
   for (int i = 0; i < D; ++i) {
     double s = 0;
     for (int j = 0; j < D; ++j) s += q[j][i].lo;

@@ -18,6 +18,9 @@
 //     where |x - v|^2 + w . (x - v) <= 0, for spheres through a point of the
 //     node up to rounding and huge w (exact rational values), skewed rows
 //     included (its 2 eta |w| term);
+//   - its outer-side test (may_be_outer) never prunes a node with a point
+//     strictly on the open side of a plane through one of its points up to
+//     rounding (exact signs), skewed rows included;
 //   - frames exist on lines and planes oblique to the axes and keep the
 //     search of their fans pruned.
 #include <boost/multiprecision/gmp.hpp>
@@ -287,6 +290,68 @@ TEST_CASE("node frame: the pencil-form test never prunes a point inside (rationa
           ++kept;
         }
         pruned += !inside_may;
+      }
+    }
+    CHECK(pruned > 300);
+    CHECK(kept > 300);
+  };
+  run(std::integral_constant<int, 2>{});
+  run(std::integral_constant<int, 3>{});
+}
+
+TEST_CASE("node frame: the outer-side test never prunes a point on the open side (rational arithmetic)",
+          "[kd_tree]") {
+  std::mt19937_64 g(29);
+  const auto uni = [&g] { return static_cast<double>(g() >> 11) * 0x1p-53; };
+  auto run = [&]<int D>(std::integral_constant<int, D>) {
+    int pruned = 0, kept = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+      std::array<double, D> a, dir;
+      for (int i = 0; i < D; ++i) a[i] = uni(), dir[i] = uni() - 0.5;
+      const double off = std::ldexp(1.0, -static_cast<int>(g() % 40));
+      std::vector<std::array<Iv, D>> pts;
+      std::vector<std::array<double, D>> raw;
+      for (int m = 0; m < 2 + static_cast<int>(g() % 10); ++m) {
+        const double t = uni();
+        std::array<double, D> x;
+        std::array<Iv, D> xi;
+        for (int i = 0; i < D; ++i) xi[i] = Iv::exact(x[i] = a[i] + t * dir[i] + off * (uni() - 0.5));
+        raw.push_back(x);
+        pts.push_back(xi);
+      }
+      const double skew_scale[] = {1e-9, 0.05, 0.2};
+      const double sk = skew_scale[g() % 3];
+      std::array<std::array<double, D>, D> u;
+      for (int k = 0; k < D; ++k)
+        for (int i = 0; i < D; ++i) u[k][i] = (i == k ? 1.0 : 0.0) + (uni() - 0.5) * sk;
+      const std::optional<NodeFrame<D>> fr = NodeFrame<D>::make(pts, u);
+      REQUIRE(fr);
+      for (int probe = 0; probe < 20; ++probe) {
+        // A plane through a point of the node moved by a tiny step, or far.
+        std::array<double, D> f0, n;
+        const auto& xs = raw[g() % raw.size()];
+        const double step = probe % 2 ? std::ldexp(uni() - 0.5, -static_cast<int>(g() % 60)) : 4 * (uni() - 0.5);
+        std::array<Iv, D> fi, ni;
+        double n2 = 0;
+        for (int i = 0; i < D; ++i) {
+          f0[i] = xs[i] + step * (uni() - 0.5);
+          n[i] = uni() - 0.5;
+          n2 += n[i] * n[i];
+          fi[i] = Iv::exact(f0[i]);
+          ni[i] = Iv::exact(n[i]);
+        }
+        const bool outer_may = fr->may_be_outer(fi, ni, sqrt_up(n2 * (1 + 0x1p-50)));
+        bool some_outer = false;
+        for (const auto& x : raw) {
+          Q s = 0;
+          for (int i = 0; i < D; ++i) s += Q(n[i]) * (Q(x[i]) - Q(f0[i]));
+          some_outer |= s > 0;
+        }
+        if (some_outer) {
+          REQUIRE(outer_may);
+          ++kept;
+        }
+        pruned += !outer_may;
       }
     }
     CHECK(pruned > 300);
