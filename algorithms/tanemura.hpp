@@ -185,7 +185,7 @@ class Tanemura {
   void set_outer_corners();
   bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                          const Ball& ball) const;
-  [[gnu::always_inline]] bool point_may_be_in_ball(const Point<D>& p) const;
+  bool point_may_be_in_ball(const Point<D>& p) const;
   bool point_outside_huge_ball(const Point<D>& p) const;  // see Ball::huge
   // Examines the points of a leaf; then the ball follows the best candidate.
   void scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf);
