@@ -18,6 +18,9 @@
 // coordinates: translated by an origin where that is exact (see build),
 // then scaled by a power of two (max |coordinate| about 1), exact unless the
 // product underflows, and then widened by an ulp.
+// A node whose points are flat and oblique (a line or plane) also keeps
+// their box in a frame of their own (algorithms/node_frame.hpp), fitted
+// bottom-up: a node is tried only if one of its children is flat.
 #pragma once
 #include <algorithm>
 #include <array>

@@ -40,7 +40,10 @@
 //     root, visiting each sibling subtree on the way, children nearer the
 //     facet's centroid first; a node is skipped when its box holds no point
 //     on the open side, or, once there is a best candidate, none in its
-//     circumsphere. The apex is near the facet, so the first leaves give a
+//     circumsphere. A long facet climbs from every vertex's leaf in turn
+//     (its apex may lie beside either end); flat oblique nodes (a line or
+//     plane of points) are also tested in their own frame, and balls far
+//     larger than their facet in pencil form (algorithms/node_frame.hpp). The apex is near the facet, so the first leaves give a
 //     small sphere and the climb costs about one box test per level. The
 //     pruning ball is a sphere of the pencil through f whose open-side part
 //     contains the best candidate's sphere's (ball_of), its centre and radius
@@ -177,7 +180,7 @@ class Tanemura {
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
-  [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
+  [[gnu::flatten]] void make_pencil();  // fcen_, fr2_, vc_ (once per search)
   bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   // The same answer, cheaper: the corner of each axis from the normal's sign
   // (set_outer_corners, once per search); box_may_be_outer decides any prune.
@@ -194,8 +197,8 @@ class Tanemura {
   // except the nodes visited already by this search: first_leaves marks
   // them (done_), one_climb skips the first leaves, many_climbs any node
   // marked (a pruned node stays prunable, as the ball only shrinks on the
-  // open side); the marks cost 4 % on uniform input, so only many_climbs
-  // pays for them.
+  // open side). Marking every visit cost instructions on uniform input, so
+  // only many_climbs pays for it.
   enum class Walk { first_leaves, one_climb, many_climbs };
   template <Walk W>
   void visit(const Facet& f, std::uint32_t k);
@@ -228,8 +231,8 @@ class Tanemura {
   std::array<Iv, D> f0_{};           // scaled base_[0]
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
   double nrm_norm_ = 0;              // an upper bound of |nrm_|
-  bool pencil_ready_ = false;        // nn_, fcen_, fr2_, vc_ computed for this facet
-  Iv nn_{};                          // |nrm_|^2
+  bool pencil_ready_ = false;        // fcen_, fr2_, vc_ computed for this facet
+  Iv nn_{};                          // |nrm_|^2 (search)
   std::array<Iv, D> fcen_{};         // centre C of the facet's circumcircle (enclosure)
   std::array<std::array<Iv, D>, D> bq_{};  // scaled base_ vertices (bq_[0] = f0_)
   std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - C (enclosures)
@@ -268,8 +271,6 @@ void Tanemura<K, D>::make_pencil() {
   // circumcentre of a triangle in space (e.g. Schneider & Eberly, Geometric
   // Tools for Computer Graphics, 2003).
   pencil_ready_ = true;
-  nn_ = Iv{0, 0};
-  for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
   std::array<Iv, D> c;
   if constexpr (D == 2) {
     for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[base_[1]][i], i) - f0_[i]) * Iv{0.5, 0.5};
@@ -602,9 +603,9 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   }
   pencil_ready_ = false;
   set_outer_corners();
-  Iv nn{0, 0};
-  for (int i = 0; i < D; ++i) nn = nn + sq(nrm_[i]);
-  nrm_norm_ = sqrt_up(nn.hi);
+  nn_ = Iv{0, 0};
+  for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
+  nrm_norm_ = sqrt_up(nn_.hi);
   for (int i = 0; i < D; ++i) {
     double s = 0;
     for (int j = 0; j < D; ++j) s += q[j][i].lo;
@@ -612,9 +613,10 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   }
   // First the leaves of the facet's vertices (the apex is usually near one of
   // them: a fan of long facets, as on collinear sets, finds it beside the
-  // near vertex), one ball for the best of them; then the climbs from each
-  // vertex's leaf to the root, one level at a time for all vertices in turn,
-  // visiting the sibling subtree on the way. A long facet's apex may lie
+  // near vertex), one ball for the best of them; then the climb from f[0]'s
+  // leaf to the root, visiting the sibling subtree on the way, or for a long
+  // facet the climbs from each vertex's leaf, one level at a time for all
+  // vertices in turn. A long facet's apex may lie
   // beside either end, just across a split: in a fan off a line (or plane),
   // climbing from the far end alone improved the best leaf by leaf along the
   // whole line, and the balls of apices with their centre on the closed side
