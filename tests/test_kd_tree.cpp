@@ -83,6 +83,53 @@ std::uint64_t counter(const RunResult& r, const std::string& name) {
   return 0;
 }
 
+double unit_random(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1p-53; }
+
+// Points of a random line (or plane, D = 3) moved off it by up to 2^-k, k
+// random (0: not flat at all), as doubles and as point intervals.
+template <int D>
+struct FlatSet {
+  std::vector<std::array<double, D>> raw;
+  std::vector<std::array<Iv, D>> pts;
+};
+template <int D>
+FlatSet<D> near_flat(std::mt19937_64& g, int max_points, bool plane) {
+  std::array<double, D> a, v, w;
+  for (int i = 0; i < D; ++i) a[i] = unit_random(g), v[i] = unit_random(g) - 0.5, w[i] = unit_random(g) - 0.5;
+  const double off = std::ldexp(1.0, -static_cast<int>(g() % 40));
+  FlatSet<D> s;
+  for (int m = 0; m < 2 + static_cast<int>(g() % max_points); ++m) {
+    const double t = unit_random(g), t2 = plane ? unit_random(g) : 0;
+    std::array<double, D> x;
+    std::array<Iv, D> xi;
+    for (int i = 0; i < D; ++i) xi[i] = Iv::exact(x[i] = a[i] + t * v[i] + t2 * w[i] + off * (unit_random(g) - 0.5));
+    s.raw.push_back(x);
+    s.pts.push_back(xi);
+  }
+  return s;
+}
+
+// Frame rows: the identity moved by up to skew / 2 in every entry.
+template <int D>
+std::array<std::array<double, D>, D> skewed_rows(std::mt19937_64& g, double skew) {
+  std::array<std::array<double, D>, D> u;
+  for (int k = 0; k < D; ++k)
+    for (int i = 0; i < D; ++i) u[k][i] = (i == k ? 1.0 : 0.0) + (unit_random(g) - 0.5) * skew;
+  return u;
+}
+
+// A fitted frame (when the points are flat enough), else one with rows `u`.
+template <int D>
+std::optional<NodeFrame<D>> fitted_or(const FlatSet<D>& s, const std::array<std::array<double, D>, D>& u) {
+  std::array<double, D> lo, hi;
+  for (int i = 0; i < D; ++i) {
+    lo[i] = hi[i] = s.raw[0][i];
+    for (const auto& x : s.raw) lo[i] = std::min(lo[i], x[i]), hi[i] = std::max(hi[i], x[i]);
+  }
+  if (auto fr = NodeFrame<D>::fit(s.pts, lo, hi)) return fr;
+  return NodeFrame<D>::make(s.pts, u);
+}
+
 }  // namespace
 
 TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[kd_tree]") {
@@ -146,43 +193,15 @@ TEST_CASE("kd-tree: far from zero, the translation keeps the search pruned", "[k
 
 TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithmetic)", "[kd_tree]") {
   std::mt19937_64 g(17);
-  const auto uni = [&g] { return static_cast<double>(g() >> 11) * 0x1p-53; };
+  const auto uni = [&g] { return unit_random(g); };
   auto run = [&]<int D>(std::integral_constant<int, D>) {
     int pruned = 0, kept_at_edge = 0;
     for (int trial = 0; trial < 400; ++trial) {
-      // Points on a random line (D = 2, 3) or plane (D = 3), moved off it by
-      // up to 2^-k, k random (0: not flat at all).
-      std::array<double, D> a, v, w;
-      for (int i = 0; i < D; ++i) a[i] = uni(), v[i] = uni() - 0.5, w[i] = uni() - 0.5;
-      const bool plane = D == 3 && g() % 2;
-      const double off = std::ldexp(1.0, -static_cast<int>(g() % 40));
-      std::vector<std::array<Iv, D>> pts;
-      std::vector<std::array<double, D>> raw;
-      for (int m = 0; m < 2 + static_cast<int>(g() % 12); ++m) {
-        const double t = uni(), t2 = plane ? uni() : 0;
-        std::array<double, D> x;
-        std::array<Iv, D> xi;
-        for (int i = 0; i < D; ++i) {
-          x[i] = a[i] + t * v[i] + t2 * w[i] + off * (uni() - 0.5);
-          xi[i] = Iv::exact(x[i]);
-        }
-        raw.push_back(x);
-        pts.push_back(xi);
-      }
+      const FlatSet<D> set = near_flat<D>(g, 12, D == 3 && g() % 2);
+      const auto& raw = set.raw;
       // Rows: orthonormal-ish from fit, or skewed ones (far from orthonormal).
-      std::array<std::array<double, D>, D> u;
-      for (int k = 0; k < D; ++k)
-        for (int i = 0; i < D; ++i) u[k][i] = (i == k ? 1.0 : 0.0) + (uni() - 0.5) * (g() % 2 ? 0.9 : 1e-9);
-      std::optional<NodeFrame<D>> fr = g() % 2 ? NodeFrame<D>::make(pts, u) : std::nullopt;
-      if (!fr) {
-        std::array<double, D> lo, hi;
-        for (int i = 0; i < D; ++i) {
-          lo[i] = hi[i] = raw[0][i];
-          for (const auto& x : raw) lo[i] = std::min(lo[i], x[i]), hi[i] = std::max(hi[i], x[i]);
-        }
-        fr = NodeFrame<D>::fit(pts, lo, hi);
-        if (!fr) fr = NodeFrame<D>::make(pts, u);
-      }
+      const auto u = skewed_rows<D>(g, g() % 2 ? 0.9 : 1e-9);
+      const std::optional<NodeFrame<D>> fr = g() % 2 ? NodeFrame<D>::make(set.pts, u) : fitted_or<D>(set, u);
       REQUIRE(fr);
       for (int probe = 0; probe < 20; ++probe) {
         // A centre near the points or far away, and r^2 within a few ulps of
@@ -223,35 +242,15 @@ TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithm
 
 TEST_CASE("node frame: the pencil-form test never prunes a point inside (rational arithmetic)", "[kd_tree]") {
   std::mt19937_64 g(23);
-  const auto uni = [&g] { return static_cast<double>(g() >> 11) * 0x1p-53; };
+  const auto uni = [&g] { return unit_random(g); };
   auto run = [&]<int D>(std::integral_constant<int, D>) {
     int pruned = 0, kept = 0;
     for (int trial = 0; trial < 300; ++trial) {
-      std::array<double, D> a, dir;
-      for (int i = 0; i < D; ++i) a[i] = uni(), dir[i] = uni() - 0.5;
-      const double off = std::ldexp(1.0, -static_cast<int>(g() % 40));
-      std::vector<std::array<Iv, D>> pts;
-      std::vector<std::array<double, D>> raw;
-      for (int m = 0; m < 2 + static_cast<int>(g() % 10); ++m) {
-        const double t = uni();
-        std::array<double, D> x;
-        std::array<Iv, D> xi;
-        for (int i = 0; i < D; ++i) xi[i] = Iv::exact(x[i] = a[i] + t * dir[i] + off * (uni() - 0.5));
-        raw.push_back(x);
-        pts.push_back(xi);
-      }
+      const FlatSet<D> set = near_flat<D>(g, 10, false);
+      const auto& raw = set.raw;
       const double skew_scale[] = {1e-9, 0.05, 0.2};
-      std::array<std::array<double, D>, D> u;
-      const double sk = skew_scale[g() % 3];
-      for (int k = 0; k < D; ++k)
-        for (int i = 0; i < D; ++i) u[k][i] = (i == k ? 1.0 : 0.0) + (uni() - 0.5) * sk;
-      std::array<double, D> lo, hi;
-      for (int i = 0; i < D; ++i) {
-        lo[i] = hi[i] = raw[0][i];
-        for (const auto& x : raw) lo[i] = std::min(lo[i], x[i]), hi[i] = std::max(hi[i], x[i]);
-      }
-      std::optional<NodeFrame<D>> fr = g() % 2 ? NodeFrame<D>::fit(pts, lo, hi) : std::nullopt;
-      if (!fr) fr = NodeFrame<D>::make(pts, u);
+      const auto u = skewed_rows<D>(g, skew_scale[g() % 3]);
+      const std::optional<NodeFrame<D>> fr = g() % 2 ? fitted_or<D>(set, u) : NodeFrame<D>::make(set.pts, u);
       REQUIRE(fr);
       for (int probe = 0; probe < 20; ++probe) {
         // v far away or near; w scaled so that g(x*) is about 0 at a point x*.
@@ -302,29 +301,14 @@ TEST_CASE("node frame: the pencil-form test never prunes a point inside (rationa
 TEST_CASE("node frame: the outer-side test never prunes a point on the open side (rational arithmetic)",
           "[kd_tree]") {
   std::mt19937_64 g(29);
-  const auto uni = [&g] { return static_cast<double>(g() >> 11) * 0x1p-53; };
+  const auto uni = [&g] { return unit_random(g); };
   auto run = [&]<int D>(std::integral_constant<int, D>) {
     int pruned = 0, kept = 0;
     for (int trial = 0; trial < 300; ++trial) {
-      std::array<double, D> a, dir;
-      for (int i = 0; i < D; ++i) a[i] = uni(), dir[i] = uni() - 0.5;
-      const double off = std::ldexp(1.0, -static_cast<int>(g() % 40));
-      std::vector<std::array<Iv, D>> pts;
-      std::vector<std::array<double, D>> raw;
-      for (int m = 0; m < 2 + static_cast<int>(g() % 10); ++m) {
-        const double t = uni();
-        std::array<double, D> x;
-        std::array<Iv, D> xi;
-        for (int i = 0; i < D; ++i) xi[i] = Iv::exact(x[i] = a[i] + t * dir[i] + off * (uni() - 0.5));
-        raw.push_back(x);
-        pts.push_back(xi);
-      }
+      const FlatSet<D> set = near_flat<D>(g, 10, false);
+      const auto& raw = set.raw;
       const double skew_scale[] = {1e-9, 0.05, 0.2};
-      const double sk = skew_scale[g() % 3];
-      std::array<std::array<double, D>, D> u;
-      for (int k = 0; k < D; ++k)
-        for (int i = 0; i < D; ++i) u[k][i] = (i == k ? 1.0 : 0.0) + (uni() - 0.5) * sk;
-      const std::optional<NodeFrame<D>> fr = NodeFrame<D>::make(pts, u);
+      const std::optional<NodeFrame<D>> fr = NodeFrame<D>::make(set.pts, skewed_rows<D>(g, skew_scale[g() % 3]));
       REQUIRE(fr);
       for (int probe = 0; probe < 20; ++probe) {
         // A plane through a point of the node moved by a tiny step, or far.
