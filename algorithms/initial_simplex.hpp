@@ -136,13 +136,16 @@ std::uint32_t build_initial_mesh(Mesh<D>& m, const std::array<std::uint32_t, D +
   return all[0];
 }
 
-// The start of an incremental run over pts (both Bowyer–Watsons): the initial
-// simplex, the mesh reserved for the whole run and built on it, its vertices
-// marked as processed in `merged`.  Returns the finite simplex, or nothing when
-// there is no initial simplex (the outcome is then in `res`).
+// The start of an incremental run over pts (both Bowyer–Watsons): `merged`
+// reset to kNotProcessed and `m` emptied; the initial simplex, the mesh
+// reserved for the whole run and built on it, its vertices marked as processed
+// in `merged`.  Returns the finite simplex, or nothing when there is no initial
+// simplex (the outcome is then in `res`).
 template <int D, class K>
 std::optional<std::uint32_t> start_incremental_mesh(const K& k, std::span<const Point<D>> pts, Mesh<D>& m,
                                                     std::vector<std::uint32_t>& merged, TriangulationResult& res) {
+  merged.assign(pts.size(), kNotProcessed);
+  m.clear();
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k, pts, res);
   if (!init.found) return std::nullopt;
   // Simplices including ghosts: exactly 2n - 2 in 2D (a triangulated sphere

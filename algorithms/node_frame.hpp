@@ -184,32 +184,25 @@ std::optional<NodeFrame<D>> NodeFrame<D>::make(const std::vector<std::array<Iv, 
       f.lo[k] = m == 0 ? y.lo : std::min(f.lo[k], y.lo);
       f.hi[k] = m == 0 ? y.hi : std::max(f.hi[k], y.hi);
     }
-  // Gershgorin on the Gram matrix U U^T, rounded upwards.
-  double s = 0;
+  // Gershgorin on the Gram matrix G = U U^T (s) and on I - G (eta), rounded
+  // upwards: the largest |row sum| of each.
+  double s = 0, eta = 0;
   for (int k = 0; k < D; ++k) {
-    Iv row{0, 0};
+    Iv row{0, 0}, row_dev{0, 0};
     for (int j = 0; j < D; ++j) {
       Iv g{0, 0};
       for (int i = 0; i < D; ++i) g = g + Iv::exact(u[k][i]) * Iv::exact(u[j][i]);
+      const Iv dev = k == j ? g - Iv::exact(1) : g;
       row = row + Iv::exact(std::max(std::fabs(g.lo), std::fabs(g.hi)));
+      row_dev = row_dev + Iv::exact(std::max(std::fabs(dev.lo), std::fabs(dev.hi)));
     }
     s = std::max(s, row.hi);
+    eta = std::max(eta, row_dev.hi);
   }
   // Slack for the one rounding of r2_prune * s_prune in may_meet_ball.
   f.s_prune = Iv::upper_rel(s * (1 + 0x1p-44));
   if (!std::isfinite(f.s_prune) || !(s > 0) || pts.empty()) return std::nullopt;
   f.inv_s = (Iv::exact(1) / Iv::exact(s)).lo;
-  // eta: Gershgorin on I - U U^T.
-  double eta = 0;
-  for (int k = 0; k < D; ++k) {
-    Iv row{0, 0};
-    for (int j = 0; j < D; ++j) {
-      Iv g{k == j ? -1.0 : 0.0, k == j ? -1.0 : 0.0};
-      for (int i = 0; i < D; ++i) g = g + Iv::exact(u[k][i]) * Iv::exact(u[j][i]);
-      row = row + Iv::exact(std::max(std::fabs(g.lo), std::fabs(g.hi)));
-    }
-    eta = std::max(eta, row.hi);
-  }
   f.skew = eta <= 0.5 ? Iv::upper_rel(2 * eta) : std::numeric_limits<double>::infinity();
   return f;
 }

@@ -424,9 +424,6 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
-  merged_.assign(n, kNotProcessed);
-  mesh_.clear();
-
   const std::optional<std::uint32_t> first = start_incremental_mesh<D>(k_, pts, mesh_, merged_, res);
   if (!first) return res;
   reserve_next_.store(mesh_.slots(), std::memory_order_relaxed);
