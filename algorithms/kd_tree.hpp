@@ -126,6 +126,7 @@ class KdTree {
   const NodeFrame<D>* frame(std::uint32_t k) const {
     return nodes_[k].parent & kFramed ? &frames_[frame_of_[k]] : nullptr;
   }
+  bool framed(std::uint32_t k) const { return (nodes_[k].parent & kFramed) != 0; }
   std::uint32_t parent(std::uint32_t k) const { return nodes_[k].parent & ~kFramed; }
   std::size_t frame_count() const { return frames_.size(); }
   std::uint32_t id(std::uint32_t slot) const { return items_[slot]; }

@@ -38,9 +38,10 @@
 //   * Search structure (algorithms/kd_tree.hpp): a kd-tree with boxes. The
 //     search starts at the leaf of the facet's first vertex and climbs to the
 //     root, visiting each sibling subtree on the way, children nearer the
-//     facet's centroid first; a node is skipped when its box holds no point
-//     on the open side, or, once there is a best candidate, none in its
-//     circumsphere. A long facet climbs from every vertex's leaf in turn
+//     facet's centroid (once there is a ball, its centre) first; a node is
+//     skipped when its box holds no point on the open side, or, once there
+//     is a best candidate, none in its circumsphere, or when its points lie
+//     exactly in the facet's hyperplane (algorithms/exact_flats.hpp). A long facet climbs from every vertex's leaf in turn
 //     (its apex may lie beside either end); flat oblique nodes (a line or
 //     plane of points) are also tested in their own frame, and balls far
 //     larger than their facet in pencil form (algorithms/node_frame.hpp). The apex is near the facet, so the first leaves give a
@@ -67,6 +68,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/exact_flats.hpp"
 #include "algorithms/front.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/interval.hpp"
@@ -165,6 +167,10 @@ class Tanemura {
   // with the same open side (then f is a hull facet too: see search).
   bool on_known_hull_plane(const Facet& f);
   void record_hull_plane(const Facet& f, std::uint32_t apex);
+  // Exact kernels: whether f lies in the hyperplane of flat node k's points
+  // (then none of them is a candidate: algorithms/exact_flats.hpp); once per
+  // hyperplane and search.
+  bool facet_holds_flat(const Facet& f, std::uint32_t k);
 
   // ---- search helpers (scaled coordinates, enclosures) ----
   struct Ball {
@@ -232,6 +238,11 @@ class Tanemura {
   };
   std::vector<HullPlane> hull_planes_;
   std::vector<std::uint32_t> plane_of_;
+  ExactFlats<D> flats_;
+  // flat_seen_[h] == stamp_: facet_holds_flat decided hyperplane h in this
+  // search, with the answer flat_holds_[h].
+  std::vector<std::uint32_t> flat_seen_;
+  std::vector<char> flat_holds_;
   std::vector<std::uint32_t> out_;
   std::string message_;
   bool keep_closed_ = !K::exact;
@@ -247,7 +258,7 @@ class Tanemura {
   std::array<std::array<Iv, D>, D> bq_{};  // scaled base_ vertices (bq_[0] = f0_)
   std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - C (enclosures)
   Iv fr2_{};                         // its squared radius (enclosure)
-  std::array<double, D> target_{};   // the facet's centroid (scaled, rounded): visit order only
+  std::array<double, D> target_{};   // the facet's centroid, then the ball's centre (scaled, rounded): visit order only
   // box_may_be_outer_fast: per axis, whether the box's upper end maximises
   // nrm_i (x_i - f0_i), and f0_i's end to subtract; outer_mixed_: an
   // enclosure nrm_i spans zero (then the four-corner test).
@@ -270,7 +281,8 @@ class Tanemura {
   std::uint64_t searches_ = 0, hull_facets_ = 0, examined_ = 0, candidates_ = 0, improvements_ = 0,
                 balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0,
                 hull_examined_ = 0,  // points examined by the searches that found no candidate
-                hull_by_plane_ = 0;  // hull facets settled by a known hull plane (no climb)
+                hull_by_plane_ = 0,  // hull facets settled by a known hull plane (no climb)
+                flat_skips_ = 0;     // nodes skipped as lying in the facet's hyperplane
 };
 
 template <class K, int D>
@@ -501,6 +513,14 @@ template <class K, int D>
 void Tanemura<K, D>::refresh_ball() {
   if (!ball_stale_) return;
   ball_ = ball_of(best_);
+  // Children nearer the ball's centre first: the points deepest inside the
+  // ball are the likeliest to improve on the best. In a fan off a line the
+  // better candidates lie between the facet and the best, one after the
+  // other along the line; from the centre the search halves that stretch at
+  // each improvement instead of walking it leaf by leaf (2D collinear, n =
+  // 65536: 2.92 M points examined -> 2.41 M).
+  if (ball_.bounded)
+    for (int i = 0; i < D; ++i) target_[i] = ball_.centre[i].lo / 2 + ball_.centre[i].hi / 2;
   ball_stale_ = false;
   ball_valid_ = true;
   ++balls_;
@@ -528,6 +548,11 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (!box_may_be_outer_fast(n.lo, n.hi)) return;
+  if constexpr (K::exact)
+    if (tree_.framed(k) && facet_holds_flat(f, k)) {
+      ++flat_skips_;
+      return;
+    }
   // Flat oblique points (fans off a line or plane): their oriented box, in
   // the climbs (the first leaves are scanned anyway); the outer side there
   // only while there is no ball (a hull facet's climb).
@@ -550,6 +575,27 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if (distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a))) std::swap(a, b);
   visit<W>(f, a);
   visit<W>(f, b);  // recursion depth: the tree's, about log2(n / kLeaf)
+}
+
+template <class K, int D>
+bool Tanemura<K, D>::facet_holds_flat(const Facet& f, std::uint32_t k) {
+  const std::uint32_t h = flats_.of_node(k);
+  if (h == ExactFlats<D>::kNone) return false;
+  if (flat_seen_[h] == stamp_) return flat_holds_[h];
+  // f is a facet (its vertices span a hyperplane), so it holds the flat's
+  // hyperplane iff it holds the D points spanning it.
+  bool holds = true;
+  for (const std::uint32_t r : flats_.refs(h)) {
+    bool vertex = false;
+    for (int j = 0; j < D; ++j) vertex |= f[j] == r;
+    if (!vertex && orient(f, pts_[r]) != Sign::zero) {
+      holds = false;
+      break;
+    }
+  }
+  flat_seen_[h] = stamp_;
+  flat_holds_[h] = holds;
+  return holds;
 }
 
 template <class K, int D>
@@ -763,6 +809,11 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
 
   tree_.build(pts, uniq);
   done_.assign(tree_.node_count(), 0u);
+  if constexpr (K::exact) {
+    flats_.build(k_, tree_, pts, init.ids);
+    flat_seen_.assign(flats_.count(), 0u);
+    flat_holds_.assign(flats_.count(), 0);
+  }
   if constexpr (K::exact) plane_of_.assign(n, kNone);
   out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 
@@ -820,7 +871,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   }
   const std::uint64_t bytes =
       tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Queued) +
-      hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4;
+      hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4 + flats_.bytes() +
+      flat_seen_.capacity() * 4 + flat_holds_.capacity();
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
     res.message = message_;
@@ -837,6 +889,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"points_examined_per_facet_x1000", per_facet_x1000},
       {"points_examined_hull_facets", hull_examined_},
       {"hull_facets_by_plane", hull_by_plane_},
+      {"flat_nodes", flats_.count()},
+      {"flat_nodes_skipped", flat_skips_},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
       {"balls_computed", balls_},
