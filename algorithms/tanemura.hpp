@@ -171,6 +171,15 @@ class Tanemura {
   // (then none of them is a candidate: algorithms/exact_flats.hpp); once per
   // hyperplane and search.
   bool facet_holds_flat(const Facet& f, std::uint32_t k);
+  // The search's points in a frame's coordinates, computed once per rows_id
+  // (frames down a line or plane share their rows: kd_tree.hpp) for the
+  // current facet and ball: f0_; nrm_ while there is no ball, else the
+  // ball's centre and (huge balls) w.
+  struct Projections {
+    typename NodeFrame<D>::Projected f0, normal_or_centre, w;
+  };
+  const Projections& projections(const NodeFrame<D>& fr);
+  void new_projections();  // the facet or the ball changed
 
   // ---- search helpers (scaled coordinates, enclosures) ----
   struct Ball {
@@ -239,6 +248,9 @@ class Tanemura {
   std::vector<HullPlane> hull_planes_;
   std::vector<std::uint32_t> plane_of_;
   ExactFlats<D> flats_;
+  std::vector<Projections> projections_;        // per rows_id
+  std::vector<std::uint32_t> projected_at_;     // per rows_id: projection_stamp_ when computed
+  std::uint32_t projection_stamp_ = 0;
   // flat_seen_[h] == stamp_: facet_holds_flat decided hyperplane h in this
   // search, with the answer flat_holds_[h].
   std::vector<std::uint32_t> flat_seen_;
@@ -513,6 +525,7 @@ template <class K, int D>
 void Tanemura<K, D>::refresh_ball() {
   if (!ball_stale_) return;
   ball_ = ball_of(best_);
+  new_projections();
   // Children nearer the ball's centre first: the points deepest inside the
   // ball are the likeliest to improve on the best. In a fan off a line the
   // better candidates lie between the facet and the best, one after the
@@ -558,10 +571,11 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   // only while there is no ball (a hull facet's climb).
   const NodeFrame<D>* fr = W == Walk::first_leaves ? nullptr : tree_.frame(k);
   if (fr) {
+    const Projections& p = projections(*fr);
     if (!(ball_valid_ && ball_.bounded)) {
-      if (!fr->may_be_outer(f0_, nrm_, outer_norm())) return;
-    } else if (!fr->may_meet_ball(ball_.centre, ball_.r2_prune) ||
-               (ball_.huge && !fr->may_hold_inside(f0_, ball_.w, ball_.w_norm))) {
+      if (!fr->may_be_outer(p.f0, p.normal_or_centre, outer_norm())) return;
+    } else if (!fr->may_meet_ball(p.normal_or_centre, ball_.r2_prune) ||
+               (ball_.huge && !fr->may_hold_inside(p.f0, p.w, ball_.w_norm))) {
       return;
     }
   }
@@ -575,6 +589,29 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if (distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a))) std::swap(a, b);
   visit<W>(f, a);
   visit<W>(f, b);  // recursion depth: the tree's, about log2(n / kLeaf)
+}
+
+template <class K, int D>
+const typename Tanemura<K, D>::Projections& Tanemura<K, D>::projections(const NodeFrame<D>& fr) {
+  Projections& p = projections_[fr.rows_id];
+  if (projected_at_[fr.rows_id] == projection_stamp_) return p;
+  projected_at_[fr.rows_id] = projection_stamp_;
+  p.f0 = fr.project(f0_);
+  if (!(ball_valid_ && ball_.bounded)) {
+    p.normal_or_centre = fr.project(nrm_);
+    return p;
+  }
+  p.normal_or_centre = fr.project(ball_.centre);
+  if (ball_.huge) p.w = fr.project(ball_.w);
+  return p;
+}
+
+template <class K, int D>
+void Tanemura<K, D>::new_projections() {
+  if (++projection_stamp_ == 0) {  // wrapped: no projection may look current
+    std::fill(projected_at_.begin(), projected_at_.end(), 0u);
+    projection_stamp_ = 1;
+  }
 }
 
 template <class K, int D>
@@ -662,6 +699,7 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
     nrm_ = {cross(1, 2), cross(2, 0), cross(0, 1)};
   }
   pencil_ready_ = false;
+  new_projections();
   set_outer_corners();
   nrm_norm_ = -1;  // not yet (outer_norm)
   for (int i = 0; i < D; ++i) {
@@ -809,6 +847,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
 
   tree_.build(pts, uniq);
   done_.assign(tree_.node_count(), 0u);
+  projections_.resize(tree_.frame_count());
+  projected_at_.assign(tree_.frame_count(), 0u);
   if constexpr (K::exact) {
     flats_.build(k_, tree_, pts, init.ids);
     flat_seen_.assign(flats_.count(), 0u);
@@ -872,6 +912,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   const std::uint64_t bytes =
       tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Queued) +
       hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4 + flats_.bytes() +
+      projections_.capacity() * sizeof(Projections) + projected_at_.capacity() * 4 +
       flat_seen_.capacity() * 4 + flat_holds_.capacity();
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;

@@ -10,6 +10,8 @@
 //   - the translation keeps the search pruned on consecutive doubles far from
 //     zero (half-integers near 2^52, binade-doubles near 2^1000), where the
 //     untranslated enclosures were as wide as the spacing;
+//   - a frame's projection U x (plain doubles with an error bound) encloses
+//     the exact value, where it cancels too;
 //   - an oriented box (algorithms/node_frame.hpp) never prunes a ball that
 //     holds one of its points, for rows far from orthonormal too (its
 //     Gershgorin bound), with balls whose radius is within an ulp of the
@@ -189,6 +191,57 @@ TEST_CASE("kd-tree: far from zero, the translation keeps the search pruned", "[k
     const RunResult b = run(ps, o);
     CHECK(oracle::canonical_simplices<3>(t.simplices) == oracle::canonical_simplices<3>(b.simplices));
   }
+}
+
+TEST_CASE("node frame: projections enclose U x (rational arithmetic)", "[kd_tree]") {
+  // project() in plain doubles: u . m rounded, within 2^-51 sum |u_i m_i| of
+  // the exact value (gamma_D), plus the intervals' radii. Adversarial: the
+  // last coordinate cancels the others (the exact value is tiny, the
+  // rounding errors are those of the large products), magnitudes from
+  // subnormal to 2^1000, point intervals and wide ones. Caught: the term at
+  // 2^-53, the radii or the underflow allowance dropped. Not caught: 2^-52
+  // (the worst case needs every rounding at its maximum, in one direction)
+  // and the factor 1 + 2^-48 for the radius's own roundings.
+  std::mt19937_64 g(23);
+  auto run = [&]<int D>(std::integral_constant<int, D>) {
+    int cancelled = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+      FlatSet<D> one;
+      one.pts.push_back({});
+      for (int i = 0; i < D; ++i) one.pts[0][i] = Iv::exact(0);
+      const auto u = skewed_rows<D>(g, g() % 2 ? 0.9 : 1e-9);
+      const std::optional<NodeFrame<D>> fr = NodeFrame<D>::make(one.pts, u);
+      REQUIRE(fr);
+      const int e = static_cast<int>(g() % 2075) - 1074;  // 2^-1074 .. 2^1000
+      std::array<Iv, D> x;
+      for (int i = 0; i < D; ++i) {
+        const double m = std::ldexp(unit_random(g) - 0.5, e);
+        const double w = g() % 3 ? 0 : std::ldexp(unit_random(g), e - static_cast<int>(g() % 60));
+        x[i] = {m - w, m + w};
+      }
+      const int k = static_cast<int>(g() % D);
+      if (g() % 2 && u[k][D - 1] != 0) {  // u_k . x about zero
+        double s = 0;
+        for (int i = 0; i < D - 1; ++i) s += u[k][i] * x[i].lo;
+        const double last = -s / u[k][D - 1];
+        if (!std::isfinite(last)) continue;
+        x[D - 1] = Iv::exact(last);
+        for (int i = 0; i < D - 1; ++i) x[i] = Iv::exact(x[i].lo);
+        ++cancelled;
+      }
+      const auto p = fr->project(x);
+      for (int corner = 0; corner < (1 << D); ++corner) {
+        Q exact = 0;
+        for (int i = 0; i < D; ++i) exact += Q(u[k][i]) * Q(corner >> i & 1 ? x[i].hi : x[i].lo);
+        INFO("row " << k << " e " << e);
+        REQUIRE(Q(p.y[k].lo) <= exact);
+        REQUIRE(exact <= Q(p.y[k].hi));
+      }
+    }
+    CHECK(cancelled > 5000);
+  };
+  run(std::integral_constant<int, 2>{});
+  run(std::integral_constant<int, 3>{});
 }
 
 TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithmetic)", "[kd_tree]") {
