@@ -167,10 +167,10 @@ class Tanemura {
   // with the same open side (then f is a hull facet too: see search).
   bool on_known_hull_plane(const Facet& f);
   void record_hull_plane(const Facet& f, std::uint32_t apex);
-  // Exact kernels: whether f lies in the hyperplane of flat node k's points
-  // (then none of them is a candidate: algorithms/exact_flats.hpp); once per
-  // hyperplane and search.
-  bool facet_holds_flat(const Facet& f, std::uint32_t k);
+  // Exact kernels: whether f lies in the hyperplane h of a flat node's
+  // points (then none of them is a candidate: algorithms/exact_flats.hpp);
+  // decided once per hyperplane and search (flat_seen_).
+  bool facet_holds_flat(const Facet& f, std::uint32_t h);
   // The search's points in a frame's coordinates, computed once per rows_id
   // (frames down a line or plane share their rows: kd_tree.hpp) for the
   // current facet and ball: f0_; nrm_ while there is no ball, else the
@@ -250,6 +250,7 @@ class Tanemura {
   ExactFlats<D> flats_;
   std::vector<Projections> projections_;        // per rows_id
   std::vector<std::uint32_t> projected_at_;     // per rows_id: projection_stamp_ when computed
+  std::vector<std::uint32_t> f0_projected_at_;  // per rows_id: stamp_ when f0 was projected
   std::uint32_t projection_stamp_ = 0;
   // flat_seen_[h] == stamp_: facet_holds_flat decided hyperplane h in this
   // search, with the answer flat_holds_[h].
@@ -562,10 +563,12 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (!box_may_be_outer_fast(n.lo, n.hi)) return;
   if constexpr (K::exact)
-    if (tree_.framed(k) && facet_holds_flat(f, k)) {
-      ++flat_skips_;
-      return;
-    }
+    if (tree_.framed(k))
+      if (const std::uint32_t h = flats_.of_node(k); h != ExactFlats<D>::kNone)
+        if (flat_seen_[h] == stamp_ ? flat_holds_[h] : facet_holds_flat(f, h)) {
+          ++flat_skips_;
+          return;
+        }
   // Flat oblique points (fans off a line or plane): their oriented box, in
   // the climbs (the first leaves are scanned anyway); the outer side there
   // only while there is no ball (a hull facet's climb).
@@ -596,7 +599,10 @@ const typename Tanemura<K, D>::Projections& Tanemura<K, D>::projections(const No
   Projections& p = projections_[fr.rows_id];
   if (projected_at_[fr.rows_id] == projection_stamp_) return p;
   projected_at_[fr.rows_id] = projection_stamp_;
-  p.f0 = fr.project(f0_);
+  if (f0_projected_at_[fr.rows_id] != stamp_) {  // f0 stays for the whole search
+    f0_projected_at_[fr.rows_id] = stamp_;
+    p.f0 = fr.project(f0_);
+  }
   if (!(ball_valid_ && ball_.bounded)) {
     p.normal_or_centre = fr.project(nrm_);
     return p;
@@ -615,10 +621,7 @@ void Tanemura<K, D>::new_projections() {
 }
 
 template <class K, int D>
-bool Tanemura<K, D>::facet_holds_flat(const Facet& f, std::uint32_t k) {
-  const std::uint32_t h = flats_.of_node(k);
-  if (h == ExactFlats<D>::kNone) return false;
-  if (flat_seen_[h] == stamp_) return flat_holds_[h];
+bool Tanemura<K, D>::facet_holds_flat(const Facet& f, std::uint32_t h) {
   // f is a facet (its vertices span a hyperplane), so it holds the flat's
   // hyperplane iff it holds the D points spanning it.
   bool holds = true;
@@ -718,8 +721,10 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   // whole line, and the balls of apices with their centre on the closed side
   // are huge. Every node is visited or pruned: the search is exhaustive; no
   // subtree is visited twice (done_).
-  if (++stamp_ == 0) {  // wrapped: no node may look done
+  if (++stamp_ == 0) {  // wrapped: no node may look done, nothing decided or projected
     std::fill(done_.begin(), done_.end(), 0u);
+    std::fill(flat_seen_.begin(), flat_seen_.end(), 0u);
+    std::fill(f0_projected_at_.begin(), f0_projected_at_.end(), 0u);
     stamp_ = 1;
   }
   defer_ball_ = true;
@@ -849,6 +854,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   done_.assign(tree_.node_count(), 0u);
   projections_.resize(tree_.frame_count());
   projected_at_.assign(tree_.frame_count(), 0u);
+  f0_projected_at_.assign(tree_.frame_count(), 0u);
   if constexpr (K::exact) {
     flats_.build(k_, tree_, pts, init.ids);
     flat_seen_.assign(flats_.count(), 0u);
@@ -912,7 +918,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   const std::uint64_t bytes =
       tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Queued) +
       hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4 + flats_.bytes() +
-      projections_.capacity() * sizeof(Projections) + projected_at_.capacity() * 4 +
+      projections_.capacity() * sizeof(Projections) + projected_at_.capacity() * 8 +
       flat_seen_.capacity() * 4 + flat_holds_.capacity();
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
