@@ -210,14 +210,15 @@ std::optional<NodeFrame<D>> NodeFrame<D>::make(const std::vector<std::array<Iv, 
   NodeFrame f;
   f.u = u;
   // The box in the frame: enclosures of u_k . x.
-  for (std::size_t m = 0; m < pts.size(); ++m)
+  for (std::size_t m = 0; m < pts.size(); ++m) {
+    const Projected p = f.project(pts[m]);
     for (int k = 0; k < D; ++k) {
-      Iv y{0, 0};
-      for (int i = 0; i < D; ++i) y = y + Iv::exact(u[k][i]) * pts[m][i];
+      const Iv& y = p.y[k];
       if (!y.bounded()) return std::nullopt;
       f.lo[k] = m == 0 ? y.lo : std::min(f.lo[k], y.lo);
       f.hi[k] = m == 0 ? y.hi : std::max(f.hi[k], y.hi);
     }
+  }
   // Gershgorin on the Gram matrix G = U U^T (s) and on I - G (eta), rounded
   // upwards: the largest |row sum| of each.
   double s = 0, eta = 0;
