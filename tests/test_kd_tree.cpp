@@ -11,7 +11,9 @@
 //     zero (half-integers near 2^52, binade-doubles near 2^1000), where the
 //     untranslated enclosures were as wide as the spacing;
 //   - a frame's projection U x (plain doubles with an error bound) encloses
-//     the exact value, where it cancels too;
+//     the exact value, where it cancels too; the least of a one-variable
+//     quadratic over an interval (plain doubles) is a lower bound, with the
+//     vertex within rounding of an end;
 //   - an oriented box (algorithms/node_frame.hpp) never prunes a ball that
 //     holds one of its points, for rows far from orthonormal too (its
 //     Gershgorin bound), with balls whose radius is within an ulp of the
@@ -242,6 +244,51 @@ TEST_CASE("node frame: projections enclose U x (rational arithmetic)", "[kd_tree
   };
   run(std::integral_constant<int, 2>{});
   run(std::integral_constant<int, 3>{});
+}
+
+TEST_CASE("node frame: the least of a z^2 + b z is bounded below (rational arithmetic)", "[kd_tree]") {
+  // node_frame_detail::least_of_quadratic in plain doubles: a lower bound of
+  // the exact least over [p, q], with the vertex inside, at either end, and
+  // within rounding of an end (where the derivative's sign is uncertain),
+  // magnitudes at the edges of its plain-double range (2^-500, 2^500) and
+  // beyond (the interval version). Exact least: at p, at q, or -b^2 / (4a).
+  // Caught: the value's error allowance dropped, the vertex's factor or its
+  // outward rounding dropped. Not caught: the allowance at 2^-52 (the worst
+  // case needs three maximal roundings in one direction), and the slope
+  // margin dropped (an end chosen where the vertex lies within rounding of
+  // it is lower than the vertex's value by a (z - p)^2 only, second order,
+  // inside the value's allowance).
+  std::mt19937_64 g(29);
+  int vertex_near_end = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const int ea = static_cast<int>(g() % 20) - 10, e = static_cast<int>(g() % 1040) - 520;
+    const double a = std::ldexp(0.5 + unit_random(g), ea);
+    double p = std::ldexp(unit_random(g) * 2 - 1, e), q = p + std::ldexp(unit_random(g), e - static_cast<int>(g() % 50));
+    if (g() % 8 == 0) p = 0;
+    if (g() % 8 == 0) q = std::max(0.0, p);
+    if (q < p) std::swap(p, q);
+    // b puts the vertex -b / (2a) inside, outside, or within an ulp of an end.
+    const double z = g() % 3 == 0 ? p : g() % 2 ? q : p + (q - p) * unit_random(g);
+    double b = -2 * a * z;
+    if (g() % 2) b = std::nextafter(b, g() % 2 ? INFINITY : -INFINITY);
+    if (g() % 4 == 0) b = std::ldexp(unit_random(g) * 2 - 1, e + ea);
+    vertex_near_end += z == p || z == q;
+    const double least = node_frame_detail::least_of_quadratic(a, b, p, q);
+    const auto f = [&](const Q& x) { return Q(a) * x * x + Q(b) * x; };
+    Q exact = std::min(f(Q(p)), f(Q(q)));
+    const Q zv = -Q(b) / (2 * Q(a));
+    if (Q(p) <= zv && zv <= Q(q)) exact = std::min(exact, f(zv));
+    INFO("a " << a << " b " << b << " p " << p << " q " << q);
+    const auto tame = [](double x) { return x == 0 || (std::fabs(x) >= 0x1p-500 && std::fabs(x) <= 0x1p500); };
+    if (tame(b) && tame(p) && tame(q)) REQUIRE(std::isfinite(least));
+    if (std::isnan(least)) continue;  // the interval version overflowed: no bound (callers keep the node)
+    if (std::isinf(least)) {          // its vertex overflowed: a bound still
+      REQUIRE(least < 0);
+      continue;
+    }
+    REQUIRE(Q(least) <= exact);
+  }
+  CHECK(vertex_near_end > 50000);
 }
 
 TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithmetic)", "[kd_tree]") {
