@@ -41,11 +41,13 @@
 //     facet's centroid (once there is a ball, its centre) first; a node is
 //     skipped when its box holds no point on the open side, or, once there
 //     is a best candidate, none in its circumsphere, or when its points lie
-//     exactly in the facet's hyperplane (algorithms/exact_flats.hpp). A long facet climbs from every vertex's leaf in turn
-//     (its apex may lie beside either end); flat oblique nodes (a line or
-//     plane of points) are also tested in their own frame, and balls far
-//     larger than their facet in pencil form (algorithms/node_frame.hpp). The apex is near the facet, so the first leaves give a
-//     small sphere and the climb costs about one box test per level. The
+//     exactly in the facet's hyperplane (algorithms/exact_flats.hpp). A
+//     long facet climbs from every vertex's leaf in turn (its apex may lie
+//     beside either end); flat oblique nodes (a line or plane of points) are
+//     also tested in their own frame, and balls far larger than their facet
+//     in pencil form (algorithms/node_frame.hpp). The apex is near the
+//     facet, so the first leaves give a small sphere and the climb costs
+//     about one box test per level. The
 //     pruning ball is a sphere of the pencil through f whose open-side part
 //     contains the best candidate's sphere's (ball_of), its centre and radius
 //     ENCLOSED by interval arithmetic (algorithms/interval.hpp), so a skipped

@@ -23,6 +23,7 @@
 #include "fuzz/generators.hpp"
 #include "predicates/adaptive_kernel.hpp"
 #include "tests/cgal_oracle.hpp"  // canonical_simplices only (header part; no CGAL here)
+#include "tests/run_readout.hpp"
 #include "variants/run.hpp"
 
 using namespace dlab;
@@ -76,12 +77,6 @@ std::size_t check_flats(const std::vector<Point<D>>& pts) {
   return marked;
 }
 
-std::uint64_t counter(const RunResult& r, const std::string& name) {
-  for (const auto& [key, v] : r.counters)
-    if (key == name) return v;
-  FAIL("no counter " << name);
-  return 0;
-}
 
 }  // namespace
 
@@ -110,8 +105,8 @@ TEST_CASE("exact flats: facets in the plane skip its nodes, same triangulation",
   o.algorithm = "tanemura";
   const RunResult t = run(ps, o);
   REQUIRE(t.outcome == RunResult::Outcome::ok);
-  CHECK(counter(t, "flat_nodes_skipped") > 0);
-  CHECK(counter(t, "points_examined_per_facet_x1000") < 14000);
+  CHECK(test::counter(t.counters, "flat_nodes_skipped") > 0);
+  CHECK(test::counter(t.counters, "points_examined_per_facet_x1000") < 14000);
   o.algorithm = "bowyer-watson";
   const RunResult b = run(ps, o);
   CHECK(oracle::canonical_simplices<3>(t.simplices) == oracle::canonical_simplices<3>(b.simplices));

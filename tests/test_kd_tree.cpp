@@ -44,6 +44,7 @@
 #include "fuzz/binade_edges.hpp"
 #include "fuzz/generators.hpp"
 #include "tests/cgal_oracle.hpp"  // canonical_simplices only (header part; no CGAL here)
+#include "tests/run_readout.hpp"
 #include "variants/run.hpp"
 
 using namespace dlab;
@@ -80,12 +81,6 @@ int check_tree(const std::vector<Point<D>>& pts) {
   return translated;
 }
 
-std::uint64_t counter(const RunResult& r, const std::string& name) {
-  for (const auto& [k, v] : r.counters)
-    if (k == name) return v;
-  FAIL("no counter " << name);
-  return 0;
-}
 
 double unit_random(std::mt19937_64& g) { return static_cast<double>(g() >> 11) * 0x1p-53; }
 
@@ -188,7 +183,7 @@ TEST_CASE("kd-tree: far from zero, the translation keeps the search pruned", "[k
     o.algorithm = "tanemura";
     const RunResult t = run(ps, o);
     REQUIRE(t.outcome == RunResult::Outcome::ok);
-    CHECK(counter(t, "points_examined_per_facet_x1000") < 64 * 1000);
+    CHECK(test::counter(t.counters, "points_examined_per_facet_x1000") < 64 * 1000);
     o.algorithm = "bowyer-watson";
     const RunResult b = run(ps, o);
     CHECK(oracle::canonical_simplices<3>(t.simplices) == oracle::canonical_simplices<3>(b.simplices));
@@ -465,7 +460,7 @@ TEST_CASE("node frame: fans off oblique lines and planes stay pruned", "[kd_tree
     o.algorithm = "tanemura";
     const RunResult t = run(c.ps, o);
     REQUIRE(t.outcome == RunResult::Outcome::ok);
-    CHECK(counter(t, "points_examined_per_facet_x1000") < c.bound);
+    CHECK(test::counter(t.counters, "points_examined_per_facet_x1000") < c.bound);
     o.algorithm = "bowyer-watson";
     const RunResult b = run(c.ps, o);
     if (c.dim == 2)
