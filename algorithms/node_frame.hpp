@@ -292,47 +292,13 @@ namespace node_frame_detail {
 
 // A lower bound of min a z^2 + b z over z in [p, q] (a > 0, p <= q): at p if
 // the derivative is >= 0 there, at q if <= 0 there, else the vertex's value
-// -b^2 / (4 a) (the least over all z: a lower bound wherever the vertex
-// lies). NaN when unbounded. Interval arithmetic.
-[[gnu::always_inline]] inline double least_of_quadratic_iv(double a, double b, double p, double q) {
+// -b^2 / (4 a). NaN when unbounded.
+[[gnu::always_inline]] inline double least_of_quadratic(double a, double b, double p, double q) {
   const Iv A = Iv::exact(a), B = Iv::exact(b), P = Iv::exact(p), Q = Iv::exact(q), two = Iv::exact(2);
   const auto at = [&](const Iv& z) { return (A * sq(z) + B * z).lo; };
   if ((two * A * P + B).lo >= 0) return at(P);
   if ((two * A * Q + B).hi <= 0) return at(Q);
   return (Iv{0, 0} - sq(B) / (A * Iv::exact(4))).lo;
-}
-
-// The same bound in plain doubles (the interval version was a quarter of
-// Tanemura's instructions on 2D collinear input), where every operand is
-// zero or within [2^-500, 2^500] in magnitude and a in [2^-8, 2^8]: then
-// nothing overflows, every rounded product and quotient below is normal or
-// exactly zero (relative error at most u = 2^-53), a sum below 2^-1022 is
-// exact, and only the last product z (a z + b) may underflow (2^-1075
-// absolute). Elsewhere the interval version. With a > 0:
-//   fl(2 fl(a z) + b) = 2 a z + b within 2u (2 |a z| + |b|)(1 + u) <
-//     2^-51 (2 |a z| + |b|): its sign is certain beyond that margin;
-//   fl(z fl(fl(a z) + b)) = a z^2 + b z within 3u (1 + u)^2 (|a z^2| +
-//     |b z|) < 2^-51 (|a z^2| + |b z|), plus 2^-1075;
-//   fl(fl(b b) / fl(4 a)) = b^2 / (4 a) times at most (1 + u)^2 < 1 + 2^-51.
-// The margins are computed with their own roundings covered by a factor
-// (1 + 2^-48), the final differences rounded outwards (Iv::lower_rel).
-[[gnu::always_inline]] inline double least_of_quadratic(double a, double b, double p, double q) {
-  const auto tame = [](double x) {
-    const double m = std::fabs(x);
-    return x == 0 || (m >= 0x1p-500 && m <= 0x1p500);
-  };
-  if (!(a >= 0x1p-8 && a <= 0x1p8 && tame(b) && tame(p) && tame(q))) return least_of_quadratic_iv(a, b, p, q);
-  const auto slope_margin = [&](double az) { return (2 * std::fabs(az) + std::fabs(b)) * 0x1p-51 * (1 + 0x1p-48); };
-  const auto at = [&](double z, double az) {
-    const double v = z * (az + b);
-    const double err = (std::fabs(az * z) + std::fabs(b * z)) * 0x1p-51 * (1 + 0x1p-48) + 0x1p-1070;
-    return Iv::lower_rel(v - err);
-  };
-  const double ap = a * p, aq = a * q;
-  if (const double d = 2 * ap + b; d >= 0 && d > slope_margin(ap)) return at(p, ap);
-  if (const double d = 2 * aq + b; d <= 0 && -d > slope_margin(aq)) return at(q, aq);
-  const double vertex = (b * b) / (4 * a) * (1 + 0x1p-51) * (1 + 0x1p-52);
-  return -Iv::upper_rel(vertex);
 }
 
 }  // namespace node_frame_detail

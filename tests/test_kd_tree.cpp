@@ -12,8 +12,8 @@
 //     untranslated enclosures were as wide as the spacing;
 //   - a frame's projection U x (plain doubles with an error bound) encloses
 //     the exact value, where it cancels too; the least of a one-variable
-//     quadratic over an interval (plain doubles) is a lower bound, with the
-//     vertex within rounding of an end;
+//     quadratic over an interval is a lower bound, with the vertex within
+//     rounding of an end;
 //   - an oriented box (algorithms/node_frame.hpp) never prunes a ball that
 //     holds one of its points, for rows far from orthonormal too (its
 //     Gershgorin bound), with balls whose radius is within an ulp of the
@@ -242,17 +242,15 @@ TEST_CASE("node frame: projections enclose U x (rational arithmetic)", "[kd_tree
 }
 
 TEST_CASE("node frame: the least of a z^2 + b z is bounded below (rational arithmetic)", "[kd_tree]") {
-  // node_frame_detail::least_of_quadratic in plain doubles: a lower bound of
-  // the exact least over [p, q], with the vertex inside, at either end, and
-  // within rounding of an end (where the derivative's sign is uncertain),
-  // magnitudes at the edges of its plain-double range (2^-500, 2^500) and
-  // beyond (the interval version). Exact least: at p, at q, or -b^2 / (4a).
-  // Caught: the value's error allowance dropped, the vertex's factor or its
-  // outward rounding dropped. Not caught: the allowance at 2^-52 (the worst
-  // case needs three maximal roundings in one direction), and the slope
-  // margin dropped (an end chosen where the vertex lies within rounding of
-  // it is lower than the vertex's value by a (z - p)^2 only, second order,
-  // inside the value's allowance).
+  // node_frame_detail::least_of_quadratic (interval arithmetic): a lower
+  // bound of the exact least over [p, q], with the vertex inside, at either
+  // end, and within rounding of an end (where the derivative's sign is
+  // uncertain), magnitudes from 2^-520 to 2^520. Exact least: at p, at q,
+  // or -b^2 / (4a). A NaN is no bound (the callers keep the node), allowed
+  // only where a product may overflow or underflow. Caught: the vertex's
+  // value rounded the wrong way. Not caught: an end chosen on an uncertain
+  // slope (the vertex then lies within rounding of that end, and its value
+  // is lower by a (z - p)^2 only, inside the value's outward rounding).
   std::mt19937_64 g(29);
   int vertex_near_end = 0;
   for (int trial = 0; trial < 200000; ++trial) {
@@ -276,8 +274,8 @@ TEST_CASE("node frame: the least of a z^2 + b z is bounded below (rational arith
     INFO("a " << a << " b " << b << " p " << p << " q " << q);
     const auto tame = [](double x) { return x == 0 || (std::fabs(x) >= 0x1p-500 && std::fabs(x) <= 0x1p500); };
     if (tame(b) && tame(p) && tame(q)) REQUIRE(std::isfinite(least));
-    if (std::isnan(least)) continue;  // the interval version overflowed: no bound (callers keep the node)
-    if (std::isinf(least)) {          // its vertex overflowed: a bound still
+    if (std::isnan(least)) continue;  // overflowed: no bound (callers keep the node)
+    if (std::isinf(least)) {          // the vertex's value overflowed: a bound still
       REQUIRE(least < 0);
       continue;
     }
