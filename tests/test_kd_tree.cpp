@@ -129,6 +129,30 @@ std::optional<NodeFrame<D>> fitted_or(const FlatSet<D>& s, const std::array<std:
   return NodeFrame<D>::make(s.pts, u);
 }
 
+// The probes of a frame test's soundness check: where the exact answer
+// says a point may lie inside, the test must keep the node (REQUIREd);
+// both kinds of probe must be frequent for the check to mean something.
+struct PruneTally {
+  int pruned = 0, kept = 0;
+  void record(bool must_keep, bool keeps) {
+    if (must_keep) {
+      REQUIRE(keeps);
+      ++kept;
+    }
+    pruned += !keeps;
+  }
+  void check(int least) const {
+    CHECK(pruned > least);
+    CHECK(kept > least);
+  }
+};
+
+template <class Run>
+void in_2d_and_3d(Run&& run) {
+  run(std::integral_constant<int, 2>{});
+  run(std::integral_constant<int, 3>{});
+}
+
 }  // namespace
 
 TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[kd_tree]") {
@@ -237,8 +261,7 @@ TEST_CASE("node frame: projections enclose U x (rational arithmetic)", "[kd_tree
     }
     CHECK(cancelled > 5000);
   };
-  run(std::integral_constant<int, 2>{});
-  run(std::integral_constant<int, 3>{});
+  in_2d_and_3d(run);
 }
 
 TEST_CASE("node frame: the least of a z^2 + b z is bounded below (rational arithmetic)", "[kd_tree]") {
@@ -288,7 +311,7 @@ TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithm
   std::mt19937_64 g(17);
   const auto uni = [&g] { return unit_random(g); };
   auto run = [&]<int D>(std::integral_constant<int, D>) {
-    int pruned = 0, kept_at_edge = 0;
+    PruneTally tally;
     for (int trial = 0; trial < 400; ++trial) {
       const FlatSet<D> set = near_flat<D>(g, 12, D == 3 && g() % 2);
       const auto& raw = set.raw;
@@ -318,26 +341,20 @@ TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithm
         for (int i = 0; i < D; ++i) ci[i] = Iv::exact(c[i]);
         const double r2_prune = r2 * (1 + 0x1p-44) + 0x1p-1000;  // the tree's ball test's slack
         const bool meets = fr->may_meet_ball(ci, r2_prune);
-        if (Q(r2) >= least) {
-          INFO("r2 " << r2 << " least " << static_cast<double>(least));
-          REQUIRE(meets);
-          ++kept_at_edge;
-        }
-        pruned += !meets;
+        INFO("r2 " << r2 << " least " << static_cast<double>(least));
+        tally.record(Q(r2) >= least, meets);
       }
     }
-    CHECK(pruned > 1000);
-    CHECK(kept_at_edge > 1000);
+    tally.check(1000);
   };
-  run(std::integral_constant<int, 2>{});
-  run(std::integral_constant<int, 3>{});
+  in_2d_and_3d(run);
 }
 
 TEST_CASE("node frame: the pencil-form test never prunes a point inside (rational arithmetic)", "[kd_tree]") {
   std::mt19937_64 g(23);
   const auto uni = [&g] { return unit_random(g); };
   auto run = [&]<int D>(std::integral_constant<int, D>) {
-    int pruned = 0, kept = 0;
+    PruneTally tally;
     for (int trial = 0; trial < 300; ++trial) {
       const FlatSet<D> set = near_flat<D>(g, 10, false);
       const auto& raw = set.raw;
@@ -376,19 +393,13 @@ TEST_CASE("node frame: the pencil-form test never prunes a point inside (rationa
           if (first || gx < least) least = gx;
           first = false;
         }
-        if (least <= 0) {
-          INFO("least g " << static_cast<double>(least));
-          REQUIRE(inside_may);
-          ++kept;
-        }
-        pruned += !inside_may;
+        INFO("least g " << static_cast<double>(least));
+        tally.record(least <= 0, inside_may);
       }
     }
-    CHECK(pruned > 300);
-    CHECK(kept > 300);
+    tally.check(300);
   };
-  run(std::integral_constant<int, 2>{});
-  run(std::integral_constant<int, 3>{});
+  in_2d_and_3d(run);
 }
 
 TEST_CASE("node frame: the outer-side test never prunes a point on the open side (rational arithmetic)",
@@ -396,7 +407,7 @@ TEST_CASE("node frame: the outer-side test never prunes a point on the open side
   std::mt19937_64 g(29);
   const auto uni = [&g] { return unit_random(g); };
   auto run = [&]<int D>(std::integral_constant<int, D>) {
-    int pruned = 0, kept = 0;
+    PruneTally tally;
     for (int trial = 0; trial < 300; ++trial) {
       const FlatSet<D> set = near_flat<D>(g, 10, false);
       const auto& raw = set.raw;
@@ -424,18 +435,12 @@ TEST_CASE("node frame: the outer-side test never prunes a point on the open side
           for (int i = 0; i < D; ++i) s += Q(n[i]) * (Q(x[i]) - Q(f0[i]));
           some_outer |= s > 0;
         }
-        if (some_outer) {
-          REQUIRE(outer_may);
-          ++kept;
-        }
-        pruned += !outer_may;
+        tally.record(some_outer, outer_may);
       }
     }
-    CHECK(pruned > 300);
-    CHECK(kept > 300);
+    tally.check(300);
   };
-  run(std::integral_constant<int, 2>{});
-  run(std::integral_constant<int, 3>{});
+  in_2d_and_3d(run);
 }
 
 TEST_CASE("node frame: fans off oblique lines and planes stay pruned", "[kd_tree]") {
