@@ -23,6 +23,12 @@
 // would be zero. A node inside a flat node shares its hyperplane (its
 // points are a subset), so each point is tested once, at its topmost flat
 // node.
+//
+// Nodes on one hyperplane share one id (a line of points split by a node
+// holding a point off it has several topmost flat nodes), and each point in
+// a flat node knows its hyperplane, so that the search asks the kernel
+// whether a point lies on a hyperplane (an exact zero: the adaptive kernel's
+// slowest stage) only for the few points outside flat nodes.
 #pragma once
 #include <array>
 #include <cmath>
@@ -48,10 +54,15 @@ class ExactFlats {
 
   // The hyperplane holding every point of node k exactly, or kNone.
   std::uint32_t of_node(std::uint32_t k) const { return flat_of_[k]; }
+  // The hyperplane of the flat node holding point id (an id given to build),
+  // or kNone: the point may still lie on some hyperplane.
+  std::uint32_t of_point(std::uint32_t id) const { return of_point_[id]; }
   // D points spanning it (ids into the points given to build).
   const std::array<std::uint32_t, D>& refs(std::uint32_t flat) const { return refs_[flat]; }
   std::size_t count() const { return refs_.size(); }
-  std::size_t bytes() const { return flat_of_.capacity() * 4 + refs_.capacity() * sizeof(refs_[0]); }
+  std::size_t bytes() const {
+    return flat_of_.capacity() * 4 + of_point_.capacity() * 4 + refs_.capacity() * sizeof(refs_[0]);
+  }
 
  private:
   template <class K>
@@ -63,7 +74,8 @@ class ExactFlats {
       return k.orient3d(pts[r[0]], pts[r[1]], pts[r[2]], x);
   }
 
-  std::vector<std::uint32_t> flat_of_;  // per node
+  std::vector<std::uint32_t> flat_of_;   // per node
+  std::vector<std::uint32_t> of_point_;  // per point
   std::vector<std::array<std::uint32_t, D>> refs_;
 };
 
@@ -72,6 +84,7 @@ template <class K>
 void ExactFlats<D>::build(const K& k, const KdTree<D>& tree, std::span<const Point<D>> pts,
                           const std::array<std::uint32_t, D + 1>& simplex) {
   flat_of_.assign(tree.node_count(), kNone);
+  of_point_.assign(pts.size(), kNone);
   refs_.clear();
   // Preorder: a parent comes before its children.
   for (std::uint32_t n = 0; n < tree.node_count(); ++n) {
@@ -111,8 +124,16 @@ void ExactFlats<D>::build(const K& k, const KdTree<D>& tree, std::span<const Poi
     for (std::uint32_t s = node.begin; s < node.end && flat; ++s)
       flat = orientation(k, pts, r, tree.coords(s)) == Sign::zero;
     if (!flat) continue;
-    flat_of_[n] = static_cast<std::uint32_t>(refs_.size());
-    refs_.push_back(r);
+    // The same hyperplane as one found before: its D points lie on it.
+    std::uint32_t h = 0;
+    for (; h < refs_.size(); ++h) {
+      bool same = true;
+      for (int j = 0; j < D && same; ++j) same = orientation(k, pts, refs_[h], pts[r[j]]) == Sign::zero;
+      if (same) break;
+    }
+    if (h == refs_.size()) refs_.push_back(r);
+    flat_of_[n] = h;
+    for (std::uint32_t s = node.begin; s < node.end; ++s) of_point_[tree.id(s)] = h;
   }
 }
 

@@ -70,6 +70,8 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/box_ball.hpp"
+#include "algorithms/circumball.hpp"
 #include "algorithms/exact_flats.hpp"
 #include "algorithms/front.hpp"
 #include "algorithms/initial_simplex.hpp"
@@ -79,10 +81,6 @@
 #include "algorithms/tanemura_start.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/mp_kernel.hpp"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace dlab {
 
@@ -138,18 +136,10 @@ class Tanemura {
     }
   }
 
-  // max(x, 0) without a branch: gcc compiles std::max and ?: on doubles to
-  // branches here (IEEE zeros and NaN), and in the box tests they mispredict
-  // (a sixth of all mispredictions, clustered 3D). SSE2: maxsd (NaN gives 0);
-  // else a mask of the sign bit (NaN with a clear sign bit stays NaN). Either
-  // way a NaN gap could only make a box look nearer: never a wrong prune.
-  static double pos_part(double x) {
-#if defined(__SSE2__)
-    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_setzero_pd()));
-#else
-    const std::uint64_t b = std::bit_cast<std::uint64_t>(x);
-    return std::bit_cast<double>(b & ((b >> 63) - 1));
-#endif
+  std::array<Iv, D> scaled(std::uint32_t id) const {  // the tree's enclosure of pts_[id]
+    std::array<Iv, D> x;
+    for (int i = 0; i < D; ++i) x[i] = tree_.scaled_iv(pts_[id][i], i);
+    return x;
   }
 
   static double l1(const Point<D>& x, const Point<D>& y) {
@@ -169,10 +159,19 @@ class Tanemura {
   // with the same open side (then f is a hull facet too: see search).
   bool on_known_hull_plane(const Facet& f);
   void record_hull_plane(const Facet& f, std::uint32_t apex);
-  // Exact kernels: whether f lies in the hyperplane h of a flat node's
-  // points (then none of them is a candidate: algorithms/exact_flats.hpp);
-  // decided once per hyperplane and search (flat_seen_).
-  bool facet_holds_flat(const Facet& f, std::uint32_t h);
+  // Exact kernels: which of f's vertices (bit j: f[j]) lie in the
+  // hyperplane h of a flat node's points (algorithms/exact_flats.hpp),
+  // decided once per hyperplane and search (flat_seen_, flat_mask_). If all
+  // do, f lies in h and none of the node's points is a candidate.
+  std::uint32_t flat_mask(const Facet& f, std::uint32_t h);
+  static constexpr std::uint32_t kAllVertices = (1u << D) - 1;
+  // Whether point id lies in flat h (exact orientation zero). The points
+  // outside flat nodes (beside a line or plane, or on it in a node with a
+  // point off it) are asked again and again, and their orientations are
+  // exact zeros or nearly so (the adaptive kernel's slow stages): the last
+  // answer for each is kept (on_flat_[id], off_flat_[id]: a flat that id is
+  // known to lie in, or off).
+  bool on_flat(std::uint32_t h, std::uint32_t id);
   // The search's points in a frame's coordinates, computed once per rows_id
   // (frames down a line or plane share their rows: kd_tree.hpp) for the
   // current facet and ball: f0_; nrm_ while there is no ball, else the
@@ -188,7 +187,7 @@ class Tanemura {
     bool bounded = false;
     std::array<Iv, D> centre{};
     double r2 = 0;        // upper bound of the squared radius
-    double r2_prune = 0;  // r2 with the slack of box_may_meet_ball
+    double r2_prune = 0;  // prune_r2(r2): algorithms/box_ball.hpp
     // A ball far larger than the facet (r2 > 2^20 R^2) is also tested in the
     // pencil form (NodeFrame::may_hold_inside): w = 2 (v - centre), v = the
     // facet vertex base_[0] (on every sphere of the pencil), |w| <= w_norm.
@@ -196,6 +195,16 @@ class Tanemura {
     std::array<Iv, D> w{};
     double w_norm = 0;
   };
+  // Exact kernels, once there is a best: if D - 1 of f's vertices (mask) and
+  // best_ lie in flat h, best_'s sphere meets h's hyperplane in the smallest
+  // sphere through these D points (a sphere meets a hyperplane in a sphere of
+  // it, and this one passes through them); so a point of h is inside (or on)
+  // best_'s sphere iff it is inside (or on) that ball, whose radius is the
+  // points' scale, not the sphere's: fans off a line or plane, whose spheres
+  // are huge and almost tangent to it, prune the flat's nodes with the axis
+  // box test. Else an unbounded Ball. Once per hyperplane and ball
+  // (flat_ball_at_).
+  [[gnu::flatten]] const Ball& flat_ball(const Facet& f, std::uint32_t h, std::uint32_t mask);
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
@@ -205,8 +214,10 @@ class Tanemura {
   // (set_outer_corners, once per search); box_may_be_outer decides any prune.
   bool box_may_be_outer_fast(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   void set_outer_corners();
-  bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
-                         const Ball& ball) const;
+  static bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
+                                const Ball& ball) {
+    return dlab::box_may_meet_ball<D>(lo, hi, ball.centre, ball.r2_prune);
+  }
   bool point_may_be_in_ball(const Point<D>& p) const;
   bool point_outside_huge_ball(const Point<D>& p) const;  // see Ball::huge
   double outer_norm() {  // nrm_norm_, computed on first use in a search
@@ -254,10 +265,12 @@ class Tanemura {
   std::vector<std::uint32_t> projected_at_;     // per rows_id: projection_stamp_ when computed
   std::vector<std::uint32_t> f0_projected_at_;  // per rows_id: stamp_ when f0 was projected
   std::uint32_t projection_stamp_ = 0;
-  // flat_seen_[h] == stamp_: facet_holds_flat decided hyperplane h in this
-  // search, with the answer flat_holds_[h].
-  std::vector<std::uint32_t> flat_seen_;
-  std::vector<char> flat_holds_;
+  // flat_seen_[h] == stamp_: flat_mask decided hyperplane h in this search,
+  // with the answer flat_mask_[h]; flat_ball_at_[h] == projection_stamp_:
+  // flat_balls_[h] is flat_ball's answer for the current ball.
+  std::vector<std::uint32_t> flat_seen_, flat_ball_at_, on_flat_, off_flat_;
+  std::vector<std::uint8_t> flat_mask_;
+  std::vector<Ball> flat_balls_;
   std::vector<std::uint32_t> out_;
   std::string message_;
   bool keep_closed_ = !K::exact;
@@ -297,41 +310,22 @@ class Tanemura {
                 balls_ = 0, nodes_visited_ = 0, leaves_visited_ = 0, closed_ = 0, duplicates_ = 0,
                 hull_examined_ = 0,  // points examined by the searches that found no candidate
                 hull_by_plane_ = 0,  // hull facets settled by a known hull plane (no climb)
-                flat_skips_ = 0;     // nodes skipped as lying in the facet's hyperplane
+                flat_skips_ = 0,     // nodes skipped as lying in the facet's hyperplane
+                flat_ball_skips_ = 0;  // flat nodes outside the ball's trace on their hyperplane (flat_ball)
 };
 
 template <class K, int D>
 void Tanemura<K, D>::make_pencil() {
-  // Enclosures of the centre C = q0 + c of f's circumcircle, of R^2 = |c|^2
-  // and of each vertex minus C. 2D: c = (q1 - q0) / 2. 3D, with u = q1 - q0,
-  // v = q2 - q0, n = u x v: c = ((|u|^2 v - |v|^2 u) x n) / (2 |n|^2), the
-  // circumcentre of a triangle in space (e.g. Schneider & Eberly, Geometric
-  // Tools for Computer Graphics, 2003).
+  // Enclosures of the centre C = q0 + c of f's circumcircle (the smallest
+  // sphere of the pencil: algorithms/circumball.hpp), of R^2 = |c|^2 and of
+  // each vertex minus C.
   pencil_ready_ = true;
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
-  std::array<Iv, D> c;
-  if constexpr (D == 2) {
-    for (int i = 0; i < 2; ++i) c[i] = (tree_.scaled_iv(pts_[base_[1]][i], i) - f0_[i]) * Iv{0.5, 0.5};
-  } else {
-    std::array<Iv, 3> u, v;
-    for (int i = 0; i < 3; ++i) {
-      u[i] = tree_.scaled_iv(pts_[base_[1]][i], i) - f0_[i];
-      v[i] = tree_.scaled_iv(pts_[base_[2]][i], i) - f0_[i];
-    }
-    const auto cross = [](const std::array<Iv, 3>& x, const std::array<Iv, 3>& y) {
-      return std::array<Iv, 3>{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
-                               x[0] * y[1] - x[1] * y[0]};
-    };
-    const Iv uu = sq(u[0]) + sq(u[1]) + sq(u[2]), vv = sq(v[0]) + sq(v[1]) + sq(v[2]);
-    const auto vn = cross(v, nrm_), nu = cross(nrm_, u);
-    const Iv two_nn = (nn_ + nn_);
-    for (int i = 0; i < 3; ++i) c[i] = (uu * vn[i] + vv * nu[i]) / two_nn;
-  }
-  Iv r2{0, 0};
-  for (int i = 0; i < D; ++i) r2 = r2 + sq(c[i]);
+  const Circumball<D> cb = circumball<D>(bq_, nrm_);
+  const std::array<Iv, D>& c = cb.offset;
   for (int i = 0; i < D; ++i) fcen_[i] = f0_[i] + c[i];
-  fr2_ = r2;
+  fr2_ = cb.r2;
   for (int j = 0; j < D; ++j)
     for (int i = 0; i < D; ++i)
       vc_[j][i] = j == 0 ? Iv{-c[i].hi, -c[i].lo} : bq_[j][i] - fcen_[i];
@@ -377,7 +371,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   const Iv r2 = fr2_ + sq(T) * nn_;
   if (!r2.bounded()) return b;
   b.r2 = r2.hi;
-  b.r2_prune = r2.hi * (1 + 0x1p-44) + 0x1p-1000;
+  b.r2_prune = prune_r2(r2.hi);
   b.bounded = true;
   if (r2.hi > 0x1p20 * fr2_.hi) {
     // v - centre = (v - C) - T n, with vc_[0] = v - C.
@@ -454,23 +448,6 @@ bool Tanemura<K, D>::box_may_be_outer_fast(const std::array<double, D>& lo,
   }
   if (!(s + 0x1p-44 * a <= 0)) return true;
   return box_may_be_outer(lo, hi);
-}
-
-template <class K, int D>
-bool Tanemura<K, D>::box_may_meet_ball(const std::array<double, D>& lo,
-                                       const std::array<double, D>& hi, const Ball& ball) const {
-  // Squared distance from the box to the centre enclosure in plain doubles;
-  // ball.r2_prune = r2 (1 + 2^-44) + 2^-1000 absorbs their roundings (fewer
-  // than 16, relative 2^-53 each, plus subnormal crumbs), so a prune is sound.
-  double d2 = 0;
-  for (int i = 0; i < D; ++i) {
-    // At most one of the two gaps is positive (lo <= hi, centre.lo <= centre.hi,
-    // and rounding keeps signs), so the gap is the sum of their positive parts
-    // (the same double as max(0, a, b); bit masks, no branch).
-    const double g = pos_part(lo[i] - ball.centre[i].hi) + pos_part(ball.centre[i].lo - hi[i]);
-    d2 += g * g;
-  }
-  return !(d2 > ball.r2_prune);
 }
 
 template <class K, int D>
@@ -564,17 +541,31 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
   if (!box_may_be_outer_fast(n.lo, n.hi)) return;
-  if constexpr (K::exact)
-    if (tree_.framed(k))
-      if (const std::uint32_t h = flats_.of_node(k); h != ExactFlats<D>::kNone)
-        if (flat_seen_[h] == stamp_ ? flat_holds_[h] : facet_holds_flat(f, h)) {
-          ++flat_skips_;
-          return;
-        }
   // Flat oblique points (fans off a line or plane): their oriented box, in
   // the climbs (the first leaves are scanned anyway); the outer side there
   // only while there is no ball (a hull facet's climb).
   const NodeFrame<D>* fr = W == Walk::first_leaves ? nullptr : tree_.frame(k);
+  if constexpr (K::exact)
+    if (tree_.framed(k))
+      if (const std::uint32_t h = flats_.of_node(k); h != ExactFlats<D>::kNone) {
+        const std::uint32_t mask = flat_mask(f, h);
+        if (mask == kAllVertices) {
+          ++flat_skips_;
+          return;
+        }
+        // The ball's trace on the flat decides alone where it exists: the
+        // sphere's own tests (huge, almost tangent to the flat) would
+        // prune no node that meets its trace.
+        if (const std::uint32_t off = mask ^ kAllVertices;  // one vertex off the flat
+            W != Walk::first_leaves && best_ != kNone && (off & (off - 1)) == 0)
+          if (const Ball& t = flat_ball(f, h, mask); t.bounded) {
+            if (!box_may_meet_ball(n.lo, n.hi, t)) {
+              ++flat_ball_skips_;
+              return;
+            }
+            fr = nullptr;
+          }
+      }
   if (fr) {
     const Projections& p = projections(*fr);
     if (!(ball_valid_ && ball_.bounded)) {
@@ -616,28 +607,68 @@ const typename Tanemura<K, D>::Projections& Tanemura<K, D>::projections(const No
 
 template <class K, int D>
 void Tanemura<K, D>::new_projections() {
-  if (++projection_stamp_ == 0) {  // wrapped: no projection may look current
+  if (++projection_stamp_ == 0) {  // wrapped: no projection or flat ball may look current
     std::fill(projected_at_.begin(), projected_at_.end(), 0u);
+    std::fill(flat_ball_at_.begin(), flat_ball_at_.end(), 0u);
     projection_stamp_ = 1;
   }
 }
 
 template <class K, int D>
-bool Tanemura<K, D>::facet_holds_flat(const Facet& f, std::uint32_t h) {
-  // f is a facet (its vertices span a hyperplane), so it holds the flat's
-  // hyperplane iff it holds the D points spanning it.
-  bool holds = true;
-  for (const std::uint32_t r : flats_.refs(h)) {
-    bool vertex = false;
-    for (int j = 0; j < D; ++j) vertex |= f[j] == r;
-    if (!vertex && orient(f, pts_[r]) != Sign::zero) {
-      holds = false;
-      break;
-    }
-  }
+bool Tanemura<K, D>::on_flat(std::uint32_t h, std::uint32_t id) {
+  if (flats_.of_point(id) == h) return true;
+  if (off_flat_[id] == h) return false;
+  if (on_flat_[id] == h) return true;
+  const std::array<std::uint32_t, D>& r = flats_.refs(h);
+  Sign s;
+  if constexpr (D == 2)
+    s = k_.orient2d(pts_[r[0]], pts_[r[1]], pts_[id]);
+  else
+    s = k_.orient3d(pts_[r[0]], pts_[r[1]], pts_[r[2]], pts_[id]);
+  (s == Sign::zero ? on_flat_ : off_flat_)[id] = h;
+  return s == Sign::zero;
+}
+
+template <class K, int D>
+std::uint32_t Tanemura<K, D>::flat_mask(const Facet& f, std::uint32_t h) {
+  if (flat_seen_[h] == stamp_) return flat_mask_[h];
+  std::uint32_t mask = 0;
+  for (int j = 0; j < D; ++j)
+    if (on_flat(h, f[j])) mask |= 1u << j;
   flat_seen_[h] = stamp_;
-  flat_holds_[h] = holds;
-  return holds;
+  flat_mask_[h] = static_cast<std::uint8_t>(mask);
+  return mask;
+}
+
+template <class K, int D>
+const typename Tanemura<K, D>::Ball& Tanemura<K, D>::flat_ball(const Facet& f, std::uint32_t h,
+                                                              std::uint32_t mask) {
+  Ball& b = flat_balls_[h];
+  if (flat_ball_at_[h] == projection_stamp_) return b;
+  flat_ball_at_[h] = projection_stamp_;
+  b.bounded = false;
+  if (!on_flat(h, best_)) return b;
+  std::array<std::array<Iv, D>, D> q;
+  int m = 0;
+  for (int j = 0; j < D; ++j)
+    if (mask >> j & 1u) q[m++] = scaled(f[j]);
+  q[m] = scaled(best_);
+  std::array<Iv, D> n{};
+  if constexpr (D == 3) {
+    std::array<Iv, 3> u, v;
+    for (int i = 0; i < 3; ++i) u[i] = q[1][i] - q[0][i], v[i] = q[2][i] - q[0][i];
+    n = cross(u, v);
+  }
+  const Circumball<D> cb = circumball<D>(q, n);
+  for (int i = 0; i < D; ++i) {
+    b.centre[i] = q[0][i] + cb.offset[i];
+    if (!b.centre[i].bounded()) return b;
+  }
+  if (!cb.r2.bounded()) return b;
+  b.r2 = cb.r2.hi;
+  b.r2_prune = prune_r2(b.r2);
+  b.bounded = true;
+  return b;
 }
 
 template <class K, int D>
@@ -860,7 +891,11 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   if constexpr (K::exact) {
     flats_.build(k_, tree_, pts, init.ids);
     flat_seen_.assign(flats_.count(), 0u);
-    flat_holds_.assign(flats_.count(), 0);
+    flat_mask_.assign(flats_.count(), 0);
+    flat_ball_at_.assign(flats_.count(), 0u);
+    flat_balls_.assign(flats_.count(), Ball{});
+    on_flat_.assign(n, ExactFlats<D>::kNone);
+    off_flat_.assign(n, ExactFlats<D>::kNone);
   }
   if constexpr (K::exact) plane_of_.assign(n, kNone);
   out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
@@ -921,7 +956,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       tree_.bytes() + table_.bytes() + out_.capacity() * 4 + queue_.capacity() * sizeof(Queued) +
       hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4 + flats_.bytes() +
       projections_.capacity() * sizeof(Projections) + projected_at_.capacity() * 8 +
-      flat_seen_.capacity() * 4 + flat_holds_.capacity();
+      flat_seen_.capacity() * 4 + flat_mask_.capacity() + flat_ball_at_.capacity() * 4 + (on_flat_.capacity() + off_flat_.capacity()) * 4 +
+      flat_balls_.capacity() * sizeof(Ball);
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
     res.message = message_;
@@ -940,6 +976,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       {"hull_facets_by_plane", hull_by_plane_},
       {"flat_nodes", flats_.count()},
       {"flat_nodes_skipped", flat_skips_},
+      {"flat_nodes_outside_ball", flat_ball_skips_},
       {"candidates_outer", candidates_},
       {"sphere_updates", improvements_},
       {"balls_computed", balls_},

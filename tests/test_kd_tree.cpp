@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/box_ball.hpp"
 #include "algorithms/kd_tree.hpp"
 #include "algorithms/node_frame.hpp"
 #include "fuzz/binade_edges.hpp"
@@ -339,7 +340,7 @@ TEST_CASE("node frame: no point of a pruned node is in the ball (rational arithm
           r2 *= 1 - std::ldexp(1.0, -1 - static_cast<int>(g() % 40));
         std::array<Iv, D> ci;
         for (int i = 0; i < D; ++i) ci[i] = Iv::exact(c[i]);
-        const double r2_prune = r2 * (1 + 0x1p-44) + 0x1p-1000;  // the tree's ball test's slack
+        const double r2_prune = prune_r2(r2);  // the tree's ball test's slack
         const bool meets = fr->may_meet_ball(ci, r2_prune);
         INFO("r2 " << r2 << " least " << static_cast<double>(least));
         tally.record(Q(r2) >= least, meets);
