@@ -52,7 +52,7 @@ const std::vector<std::string>& algorithm_counter_names() {
       "facets_searched", "hull_facets", "facets_closed", "points_examined", "points_examined_per_facet_x1000",
       "points_examined_hull_facets", "candidates_outer", "sphere_updates", "balls_computed", "nodes_visited",
       "leaves_visited", "max_front", "tree_nodes", "bytes_reserved", "hull_facets_by_plane", "flat_nodes",
-      "flat_nodes_skipped",
+      "flat_nodes_skipped", "flat_nodes_outside_ball",
       // george: the approximate cavity and its corrections, the result's distance from Delaunay
       "base_simplices", "approx_cavity_simplices", "float_sphere_tests", "corrected_insertions", "correction_rounds",
       "removed_for_visibility", "added_for_zero_volume", "zero_volume_not_addable", "removed_for_connectivity",
