@@ -228,8 +228,13 @@ class Tanemura {
     }
     return nrm_norm_;
   }
+  // Examines the point in a slot of the tree: best_ becomes it if it is a
+  // better candidate (the ball is then stale).
+  [[gnu::always_inline]] inline void examine(const Facet& f, std::uint32_t slot);
   // Examines the points of a leaf; then the ball follows the best candidate.
   void scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf);
+  // The same for the exceptions of a flat node whose flat part is pruned.
+  void scan_exceptions(const Facet& f, const typename ExactFlats<D>::Part& part);
   void refresh_ball();  // ball_ for best_ if it is stale
   // Visits the subtree of node k, pruned, the child nearer target_ first,
   // except the nodes visited already by this search: first_leaves marks
@@ -475,30 +480,45 @@ bool Tanemura<K, D>::point_outside_huge_ball(const Point<D>& p) const {
 }
 
 template <class K, int D>
+void Tanemura<K, D>::examine(const Facet& f, std::uint32_t slot) {
+  const std::uint32_t id = tree_.id(slot);
+  bool vertex = false;
+  for (int j = 0; j < D; ++j) vertex |= f[j] == id;
+  if (vertex || id == best_) return;
+  ++examined_;
+  const Point<D>& p = tree_.coords(slot);
+  // Certainly outside the current best sphere: cannot improve it.
+  if (ball_valid_ && ball_.bounded && !point_may_be_in_ball(p)) return;
+  if (orient(f, p) != Sign::positive) return;
+  ++candidates_;
+  if (best_ == kNone || inside(f, pts_[best_], p) == Sign::positive) {
+    // A better candidate lies inside the current sphere, on the open side,
+    // and its own sphere's open-side part lies inside the old one's (same
+    // pencil, smaller offset): the old ball still prunes soundly for the
+    // new best, so it is recomputed only once the leaf is done.
+    best_ = id;
+    ball_stale_ = true;
+    ++improvements_;
+  }
+}
+
+template <class K, int D>
 void Tanemura<K, D>::scan_leaf(const Facet& f, const typename KdTree<D>::Node& leaf) {
   ++leaves_visited_;
-  for (std::uint32_t k = leaf.begin; k < leaf.end; ++k) {
-    const std::uint32_t id = tree_.id(k);
-    bool vertex = false;
-    for (int j = 0; j < D; ++j) vertex |= f[j] == id;
-    if (vertex) continue;
-    ++examined_;
-    const Point<D>& p = tree_.coords(k);
-    // Certainly outside the current best sphere: cannot improve it.
-    if (ball_valid_ && ball_.bounded && !point_may_be_in_ball(p)) continue;
-    if (orient(f, p) != Sign::positive) continue;
-    ++candidates_;
-    if (best_ == kNone || inside(f, pts_[best_], p) == Sign::positive) {
-      // A better candidate lies inside the current sphere, on the open side,
-      // and its own sphere's open-side part lies inside the old one's (same
-      // pencil, smaller offset): the old ball still prunes soundly for the
-      // new best, so it is recomputed only once the leaf is done.
-      best_ = id;
-      ball_stale_ = true;
-      ++improvements_;
-    }
-  }
+  for (std::uint32_t k = leaf.begin; k < leaf.end; ++k) examine(f, k);
   if (!defer_ball_) refresh_ball();
+}
+
+template <class K, int D>
+void Tanemura<K, D>::scan_exceptions(const Facet& f, const typename ExactFlats<D>::Part& part) {
+  // A first leaf's points were examined at the start (examining one again
+  // is harmless, as examine skips best_, but costs).
+  for (const std::uint32_t slot : flats_.exceptions(part)) {
+    bool first = false;
+    for (int j = 0; j < D; ++j) first |= tree_.leaf_of(tree_.id(slot)) == first_leaves_[j];
+    if (!first) examine(f, slot);
+  }
+  refresh_ball();
 }
 
 template <class K, int D>
@@ -548,23 +568,30 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if constexpr (K::exact)
     if (tree_.framed(k))
       if (const std::uint32_t h = flats_.of_node(k); h != ExactFlats<D>::kNone) {
-        const std::uint32_t mask = flat_mask(f, h);
-        if (mask == kAllVertices) {
+        // The flat part pruned: only the exceptions remain (first leaves:
+        // scanned whole, see scan_exceptions).
+        const typename ExactFlats<D>::Part* part = flats_.part(k);
+        const auto flat_part_pruned = [&] {
+          if (part) scan_exceptions(f, *part);
+        };
+        if (W == Walk::first_leaves && part) {
+          // scanned whole below
+        } else if (const std::uint32_t mask = flat_mask(f, h); mask == kAllVertices) {
           ++flat_skips_;
-          return;
-        }
-        // The ball's trace on the flat decides alone where it exists: the
-        // sphere's own tests (huge, almost tangent to the flat) would
-        // prune no node that meets its trace.
-        if (const std::uint32_t off = mask ^ kAllVertices;  // one vertex off the flat
-            W != Walk::first_leaves && best_ != kNone && (off & (off - 1)) == 0)
+          return flat_part_pruned();
+        } else if (const std::uint32_t off = mask ^ kAllVertices;  // one vertex off the flat
+                   W != Walk::first_leaves && best_ != kNone && (off & (off - 1)) == 0) {
+          // The ball's trace on the flat decides alone where it exists: the
+          // sphere's own tests (huge, almost tangent to the flat) would
+          // prune no node that meets its trace.
           if (const Ball& t = flat_ball(f, h, mask); t.bounded) {
-            if (!box_may_meet_ball(n.lo, n.hi, t)) {
+            if (!(part ? box_may_meet_ball(part->lo, part->hi, t) : box_may_meet_ball(n.lo, n.hi, t))) {
               ++flat_ball_skips_;
-              return;
+              return flat_part_pruned();
             }
-            fr = nullptr;
+            if (!part) fr = nullptr;
           }
+        }
       }
   if (fr) {
     const Projections& p = projections(*fr);
