@@ -581,15 +581,17 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
           return flat_part_pruned();
         } else if (const std::uint32_t off = mask ^ kAllVertices;  // one vertex off the flat
                    W != Walk::first_leaves && best_ != kNone && (off & (off - 1)) == 0) {
-          // The ball's trace on the flat decides alone where it exists: the
-          // sphere's own tests (huge, almost tangent to the flat) would
-          // prune no node that meets its trace.
+          // A trace far smaller than the sphere (a fan off a line: the
+          // sphere huge and almost tangent to it) decides alone: the
+          // sphere's own tests would prune no node that meets it. (A fan
+          // off a line in 3D has a trace about as large as its sphere, on
+          // the plane through the line and a point beside it.)
           if (const Ball& t = flat_ball(f, h, mask); t.bounded) {
             if (!(part ? box_may_meet_ball(part->lo, part->hi, t) : box_may_meet_ball(n.lo, n.hi, t))) {
               ++flat_ball_skips_;
               return flat_part_pruned();
             }
-            if (!part) fr = nullptr;
+            if (!part && ball_valid_ && ball_.bounded && t.r2 < 0x1p-20 * ball_.r2) fr = nullptr;
           }
         }
       }

@@ -182,6 +182,14 @@ TEST_CASE("exact flats: fans off a line or plane prune by the ball's trace, same
     const Counters c = same_as_bowyer_watson<2>(gen::collinear<2>(16384, 3, 1), "adaptive");
     CHECK(test::counter(c, "nodes_visited") < 36 * test::counter(c, "facets_searched"));
   }
+  // 3D collinear n = 20000: the trace on the plane through the line and a
+  // point beside it is not far smaller than the sphere, whose frame tests
+  // must go on: 17 nodes visited per facet; 2 200 when a trace 2^-6 of the
+  // sphere's size stopped them.
+  {
+    const Counters c = same_as_bowyer_watson<3>(gen::collinear<3>(20000, 3, 1), "adaptive");
+    CHECK(test::counter(c, "nodes_visited") < 25 * test::counter(c, "facets_searched"));
+  }
   for (const char* kernel : {"adaptive", "integer", "mp"}) {
     INFO(kernel);
     const Counters c2 = same_as_bowyer_watson<2>(gen::collinear<2>(3000, 3, 1), kernel);
