@@ -30,10 +30,11 @@ inline IvPoint<3> cross(const IvPoint<3>& x, const IvPoint<3>& y) {
   return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
 }
 
-// q: the points; n (3D only): an enclosure of (q1 - q0) x (q2 - q0), which a
-// caller may have computed more tightly (Tanemura's facet normal).
+// q: the points; n and nn (3D only): enclosures of (q1 - q0) x (q2 - q0),
+// which a caller may have computed more tightly (Tanemura's facet normal),
+// and of its squared norm.
 template <int D>
-Circumball<D> circumball(const std::array<IvPoint<D>, D>& q, const IvPoint<D>& n) {
+Circumball<D> circumball(const std::array<IvPoint<D>, D>& q, const IvPoint<D>& n, Iv nn) {
   Circumball<D> b;
   if constexpr (D == 2) {
     for (int i = 0; i < 2; ++i) b.offset[i] = (q[1][i] - q[0][i]) * Iv{0.5, 0.5};
@@ -41,7 +42,6 @@ Circumball<D> circumball(const std::array<IvPoint<D>, D>& q, const IvPoint<D>& n
     IvPoint<3> u, v;
     for (int i = 0; i < 3; ++i) u[i] = q[1][i] - q[0][i], v[i] = q[2][i] - q[0][i];
     const Iv uu = sq(u[0]) + sq(u[1]) + sq(u[2]), vv = sq(v[0]) + sq(v[1]) + sq(v[2]);
-    const Iv nn = sq(n[0]) + sq(n[1]) + sq(n[2]);
     const auto vn = cross(v, n), nu = cross(n, u);
     const Iv two_nn = nn + nn;
     for (int i = 0; i < 3; ++i) b.offset[i] = (uu * vn[i] + vv * nu[i]) / two_nn;
@@ -49,6 +49,13 @@ Circumball<D> circumball(const std::array<IvPoint<D>, D>& q, const IvPoint<D>& n
   b.r2 = Iv{0, 0};
   for (int i = 0; i < D; ++i) b.r2 = b.r2 + sq(b.offset[i]);
   return b;
+}
+
+template <int D>
+Circumball<D> circumball(const std::array<IvPoint<D>, D>& q, const IvPoint<D>& n) {
+  Iv nn{0, 0};
+  for (int i = 0; i < D; ++i) nn = nn + sq(n[i]);
+  return circumball<D>(q, n, nn);
 }
 
 }  // namespace dlab

@@ -218,7 +218,7 @@ class Tanemura {
                                 const Ball& ball) {
     return dlab::box_may_meet_ball<D>(lo, hi, ball.centre, ball.r2_prune);
   }
-  bool point_may_be_in_ball(const Point<D>& p) const;
+  [[gnu::always_inline]] inline bool point_may_be_in_ball(const Point<D>& p) const;
   bool point_outside_huge_ball(const Point<D>& p) const;  // see Ball::huge
   double outer_norm() {  // nrm_norm_, computed on first use in a search
     if (nrm_norm_ < 0) {
@@ -327,7 +327,7 @@ void Tanemura<K, D>::make_pencil() {
   pencil_ready_ = true;
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
-  const Circumball<D> cb = circumball<D>(bq_, nrm_);
+  const Circumball<D> cb = circumball<D>(bq_, nrm_, nn_);
   const std::array<Iv, D>& c = cb.offset;
   for (int i = 0; i < D; ++i) fcen_[i] = f0_[i] + c[i];
   fr2_ = cb.r2;
