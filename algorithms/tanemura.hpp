@@ -41,7 +41,9 @@
 //     facet's centroid (once there is a ball, its centre) first; a node is
 //     skipped when its box holds no point on the open side, or, once there
 //     is a best candidate, none in its circumsphere, or when its points lie
-//     exactly in the facet's hyperplane (algorithms/exact_flats.hpp). A
+//     exactly in the facet's hyperplane (algorithms/exact_flats.hpp), or
+//     exactly in a hyperplane that meets the sphere in a small ball missing
+//     them (flat_ball: the fans off a line or plane). A
 //     long facet climbs from every vertex's leaf in turn (its apex may lie
 //     beside either end); flat oblique nodes (a line or plane of points) are
 //     also tested in their own frame, and balls far larger than their facet
