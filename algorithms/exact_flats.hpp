@@ -96,6 +96,7 @@ class ExactFlats {
       return k.orient3d(pts[r[0]], pts[r[1]], pts[r[2]], x);
   }
 
+  std::vector<std::array<std::uint32_t, D>> refs_;  // per hyperplane
   std::vector<std::uint32_t> flat_of_;   // per node
   std::vector<std::uint32_t> of_point_;  // per point
   std::vector<std::uint32_t> part_of_;   // per node: index in parts_, or kNone
@@ -104,7 +105,6 @@ class ExactFlats {
   // Records node n (of `tree`) as lying on hyperplane h but for the
   // exceptions exc (slots, sorted), with the flat part's box.
   void set_flat(const KdTree<D>& tree, std::uint32_t n, std::uint32_t h, const std::vector<std::uint32_t>& exc);
-  std::vector<std::array<std::uint32_t, D>> refs_;
 };
 
 template <int D>
