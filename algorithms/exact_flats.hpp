@@ -149,6 +149,7 @@ void ExactFlats<D>::build(const K& k, const KdTree<D>& tree, std::span<const Poi
         if (a == kNone || along(s, 0) < along(a, 0)) a = s;
         if (b == kNone || along(s, 0) > along(b, 0)) b = s;
       }
+      if (a == kNone) a = b = node.begin;  // none kept (NaN offsets): equal refs span nothing
       std::array<std::uint32_t, D> r{tree.id(a), tree.id(b)};
       if constexpr (D == 3) {
         const double mid = along(a, 1);
