@@ -570,30 +570,30 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if constexpr (K::exact)
     if (tree_.framed(k))
       if (const std::uint32_t h = flats_.of_node(k); h != ExactFlats<D>::kNone) {
-        // The flat part pruned: only the exceptions remain (first leaves:
-        // scanned whole, see scan_exceptions).
+        // The flat part pruned: only the exceptions remain. A first leaf
+        // with exceptions is scanned whole (see scan_exceptions).
         const typename ExactFlats<D>::Part* part = flats_.part(k);
         const auto flat_part_pruned = [&] {
           if (part) scan_exceptions(f, *part);
         };
-        if (W == Walk::first_leaves && part) {
-          // scanned whole below
-        } else if (const std::uint32_t mask = flat_mask(f, h); mask == kAllVertices) {
-          ++flat_skips_;
-          return flat_part_pruned();
-        } else if (const std::uint32_t off = mask ^ kAllVertices;  // one vertex off the flat
-                   W != Walk::first_leaves && best_ != kNone && (off & (off - 1)) == 0) {
-          // A trace far smaller than the sphere (a fan off a line: the
-          // sphere huge and almost tangent to it) decides alone: the
-          // sphere's own tests would prune no node that meets it. (A fan
-          // off a line in 3D has a trace about as large as its sphere, on
-          // the plane through the line and a point beside it.)
-          if (const Ball& t = flat_ball(f, h, mask); t.bounded) {
-            if (!(part ? box_may_meet_ball(part->lo, part->hi, t) : box_may_meet_ball(n.lo, n.hi, t))) {
-              ++flat_ball_skips_;
-              return flat_part_pruned();
+        if (W != Walk::first_leaves || !part) {
+          if (const std::uint32_t mask = flat_mask(f, h); mask == kAllVertices) {
+            ++flat_skips_;
+            return flat_part_pruned();
+          } else if (const std::uint32_t off = mask ^ kAllVertices;  // one vertex off the flat
+                     W != Walk::first_leaves && best_ != kNone && (off & (off - 1)) == 0) {
+            // A trace far smaller than the sphere (a fan off a line: the
+            // sphere huge and almost tangent to it) decides alone: the
+            // sphere's own tests would prune no node that meets it. (A fan
+            // off a line in 3D has a trace about as large as its sphere, on
+            // the plane through the line and a point beside it.)
+            if (const Ball& t = flat_ball(f, h, mask); t.bounded) {
+              if (!(part ? box_may_meet_ball(part->lo, part->hi, t) : box_may_meet_ball(n.lo, n.hi, t))) {
+                ++flat_ball_skips_;
+                return flat_part_pruned();
+              }
+              if (!part && ball_valid_ && ball_.bounded && t.r2 < 0x1p-20 * ball_.r2) fr = nullptr;
             }
-            if (!part && ball_valid_ && ball_.bounded && t.r2 < 0x1p-20 * ball_.r2) fr = nullptr;
           }
         }
       }

@@ -106,31 +106,31 @@ double coordinate(int lo, int hi) {
   return std::ldexp(static_cast<double>(m) / (1 << 20), *rc::gen::inRange(lo, hi + 1));
 }
 
+// D points whose coordinates have binades in [e - 8, e], e drawn from [lo, hi].
+template <int D>
+std::array<std::array<double, D>, D> points_near_binade(int lo, int hi) {
+  const int e = *rc::gen::inRange(lo, hi);
+  std::array<std::array<double, D>, D> q;
+  for (auto& p : q)
+    for (double& x : p) x = coordinate(e - 8, e);
+  return q;
+}
+
 }  // namespace
 
 TEST_CASE("circumball: enclosures contain the exact centre and radius (rational)", "[circumball]") {
   rc::prop("2D, every scale", [] {
-    const int e = *rc::gen::inRange(-500, 500);
-    std::array<std::array<double, 2>, 2> q;
-    for (auto& p : q)
-      for (double& x : p) x = coordinate(e - 8, e);
+    const auto q = points_near_binade<2>(-500, 500);
     RC_PRE(q[0] != q[1]);
     RC_ASSERT(check<2>(q));
   });
   rc::prop("3D, scales where the numerators, ~2^(5e), are normal doubles: bounded", [] {
-    const int e = *rc::gen::inRange(-195, 195);
-    std::array<std::array<double, 3>, 3> q;
-    for (auto& p : q)
-      for (double& x : p) x = coordinate(e - 8, e);
+    const auto q = points_near_binade<3>(-195, 195);
     RC_PRE(!collinear(q));
     RC_ASSERT(check<3>(q));
   });
   rc::prop("3D, every scale: sound where bounded", [] {
-    const int e = *rc::gen::inRange(-1050, 1024);
-    std::array<std::array<double, 3>, 3> q;
-    for (auto& p : q)
-      for (double& x : p) x = coordinate(e - 8, e);
-    check<3>(q);
+    check<3>(points_near_binade<3>(-1050, 1024));
   });
   rc::prop("3D skinny: the third vertex an ulp off the others' line", [] {
     const int e = *rc::gen::inRange(-195, 195);
