@@ -76,7 +76,8 @@ class ExactFlats {
   const Part* part(std::uint32_t k) const { return part_of_[k] == kNone ? nullptr : &parts_[part_of_[k]]; }
   std::span<const std::uint32_t> exceptions(const Part& p) const { return {exc_.data() + p.begin, p.count}; }
   // The hyperplane of the flat node holding point id (an id given to build),
-  // or kNone: the point may still lie on some hyperplane.
+  // or kNone: the point may still lie on some hyperplane. Only where count()
+  // > 0 (the table is not allocated on sets without flats).
   std::uint32_t of_point(std::uint32_t id) const { return of_point_[id]; }
   // D points spanning it (ids into the points given to build).
   const std::array<std::uint32_t, D>& refs(std::uint32_t flat) const { return refs_[flat]; }
@@ -113,7 +114,7 @@ void ExactFlats<D>::build(const K& k, const KdTree<D>& tree, std::span<const Poi
                           const std::array<std::uint32_t, D + 1>& simplex) {
   flat_of_.assign(tree.node_count(), kNone);
   part_of_.assign(tree.node_count(), kNone);
-  of_point_.assign(pts.size(), kNone);
+  of_point_.clear();
   refs_.clear();
   parts_.clear();
   exc_.clear();
@@ -195,6 +196,7 @@ void ExactFlats<D>::build(const K& k, const KdTree<D>& tree, std::span<const Poi
       if (same) break;
     }
     if (h == refs_.size()) refs_.push_back(r);
+    if (of_point_.empty()) of_point_.assign(pts.size(), kNone);
     set_flat(tree, n, h, exc);
     for (std::uint32_t s = node.begin, e = 0; s < node.end; ++s) {
       if (e < exc.size() && exc[e] == s) {
