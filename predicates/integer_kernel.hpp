@@ -3,7 +3,9 @@
 //
 // Each double coordinate is mapped to its index on the kernel's grid
 // (predicates/integer_grid.hpp: nearest grid point, clamped to the box), and
-// the determinant is computed exactly in integers. The answer is the exact
+// the determinant is computed exactly in integers, unless a floating-point
+// filter on the index differences decides its sign first (as CGAL's Epeck
+// filters before its exact numbers; see the predicates below). The answer is the exact
 // sign for the snapped points, and it is consistent for every input (the
 // snapping is a fixed function of the point). Snap first (`snap_all`) to
 // triangulate exactly the points the kernel sees.
@@ -40,6 +42,7 @@
 #include <string_view>
 #include <vector>
 
+#include "predicates/float_filter.hpp"
 #include "predicates/integer_grid.hpp"
 #include "predicates/kernel.hpp"
 #include "predicates/wide_int.hpp"
@@ -196,6 +199,15 @@ Sign sign(const T& v) {
   return static_cast<Sign>(sign_int(v));
 }
 
+// The filter's input: p - o per axis, exact in int64 (|p - o| <= 2^B - 1 <
+// 2^62), then rounded once by the conversion to double.
+template <std::size_t D>
+Point<D> rounded_difference(const std::array<std::int64_t, D>& p, const std::array<std::int64_t, D>& o) {
+  Point<D> r;
+  for (std::size_t j = 0; j < D; ++j) r[j] = static_cast<double>(p[j] - o[j]);
+  return r;
+}
+
 }  // namespace intdet
 
 template <int B2, int B3>
@@ -236,6 +248,7 @@ class BasicIntegerKernel {
     if (!fitted2_) {
       g2_ = IntegerGrid<2>::fit(pts, B2);
       fitted2_ = true;
+      grid_points_only2_ = false;  // checked on the old grid
     }
     return last_ = g2_.snap_all(pts);
   }
@@ -243,24 +256,120 @@ class BasicIntegerKernel {
     if (!fitted3_) {
       g3_ = IntegerGrid<3>::fit(pts, B3);
       fitted3_ = true;
+      grid_points_only3_ = false;  // checked on the old grid
     }
     return last_ = g3_.snap_all(pts);
   }
   const SnapStats& last_snap() const { return last_; }
 
+  // fit_static_filter(pts): the caller promises that every point it will ask
+  // about is one of pts (variants/driver.hpp, as for AdaptiveKernel). Where
+  // each of them is a grid point (snap(p) == p, as after snap_all), its
+  // coordinates are exactly h times its indices (integer_grid.hpp), so each
+  // determinant of them is h^degree > 0 times the integer one: the filter
+  // then runs on the coordinates themselves, with no indices to compute (it
+  // declines for range where h is tiny or huge, and the indices take over).
+  // Otherwise the kernel stays as it was.
+  void fit_static_filter(std::span<const Point2> pts) { grid_points_only2_ = on_grid(g2_, pts); }
+  void fit_static_filter(std::span<const Point3> pts) { grid_points_only3_ = on_grid(g3_, pts); }
+  bool grid_points_only(int dim) const { return dim == 2 ? grid_points_only2_ : grid_points_only3_; }
+  // The same kernel without that promise (for points a caller makes itself).
+  BasicIntegerKernel without_static_filter() const {
+    BasicIntegerKernel k = *this;
+    k.grid_points_only2_ = k.grid_points_only3_ = false;
+    return k;
+  }
+
+  // The filter (stage 0, "filter") answers before the integer determinant
+  // (stage 1, "integer"): on grid points as above, else FloatFilter
+  // (predicates/float_filter.hpp) on the index differences rounded to double,
+  // with the base point at the origin. Its bound assumes of each coordinate
+  // difference only |computed - exact| <= u |computed|, which one rounding of
+  // an exact integer gives (every index is a double, so converting the indices
+  // first and subtracting rounds once too); the differences from the origin
+  // are the inputs themselves, exactly. So a sign it decides is the sign of
+  // the integer determinant (a zero only when every difference on an axis is
+  // 0). Every nonzero |difference| lies in [1, 2^62), inside each of its range
+  // guards: it never declines for range.
+  static constexpr std::array<std::string_view, 2> stage_names{"filter", "integer"};
+  static_assert([] {
+    for (const auto& s : {filter_bound::orient2d_spec, filter_bound::incircle_spec,
+                          filter_bound::orient3d_spec, filter_bound::insphere_spec})
+      if (!(s.lo <= 1 && 0x1p62 <= s.hi)) return false;
+    return true;
+  }());
+
+  Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) const {
+    if (grid_points_only2_)
+      if (const auto s = FloatFilter{}.orient2d(a, b, c)) return {*s, 0};
+    const auto ia = g2_.index(a), ib = g2_.index(b), ic = g2_.index(c);
+    using intdet::rounded_difference;
+    if (const auto s = FloatFilter{}.orient2d(rounded_difference(ia, ic), rounded_difference(ib, ic), Point2{}))
+      return {*s, 0};
+    return {intdet::sign(intdet::orient2d<B2>(ia, ib, ic)), 1};
+  }
+  Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    if (grid_points_only2_)
+      if (const auto s = FloatFilter{}.incircle(a, b, c, d)) return {*s, 0};
+    const auto ia = g2_.index(a), ib = g2_.index(b), ic = g2_.index(c), id = g2_.index(d);
+    using intdet::rounded_difference;
+    if (const auto s = FloatFilter{}.incircle(rounded_difference(ia, id), rounded_difference(ib, id),
+                                              rounded_difference(ic, id), Point2{}))
+      return {*s, 0};
+    return {intdet::sign(intdet::incircle<B2>(ia, ib, ic, id)), 1};
+  }
+  Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    if (grid_points_only3_)
+      if (const auto s = FloatFilter{}.orient3d(a, b, c, d)) return {*s, 0};
+    const auto ia = g3_.index(a), ib = g3_.index(b), ic = g3_.index(c), id = g3_.index(d);
+    using intdet::rounded_difference;
+    if (const auto s = FloatFilter{}.orient3d(rounded_difference(ia, id), rounded_difference(ib, id),
+                                              rounded_difference(ic, id), Point3{}))
+      return {*s, 0};
+    return {intdet::sign(intdet::orient3d<B3>(ia, ib, ic, id)), 1};
+  }
+  Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                         const Point3& e) const {
+    if (grid_points_only3_)
+      if (const auto s = FloatFilter{}.insphere(a, b, c, d, e)) return {*s, 0};
+    const auto ia = g3_.index(a), ib = g3_.index(b), ic = g3_.index(c), id = g3_.index(d),
+               ie = g3_.index(e);
+    using intdet::rounded_difference;
+    if (const auto s = FloatFilter{}.insphere(rounded_difference(ia, ie), rounded_difference(ib, ie),
+                                              rounded_difference(ic, ie), rounded_difference(id, ie),
+                                              Point3{}))
+      return {*s, 0};
+    return {intdet::sign(intdet::insphere<B3>(ia, ib, ic, id, ie)), 1};
+  }
+
   Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const {
-    return intdet::sign(intdet::orient2d<B2>(g2_.index(a), g2_.index(b), g2_.index(c)));
+    return orient2d_staged(a, b, c).sign;
   }
   Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
-    return intdet::sign(
-        intdet::incircle<B2>(g2_.index(a), g2_.index(b), g2_.index(c), g2_.index(d)));
+    return incircle_staged(a, b, c, d).sign;
   }
   Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
-    return intdet::sign(
-        intdet::orient3d<B3>(g3_.index(a), g3_.index(b), g3_.index(c), g3_.index(d)));
+    return orient3d_staged(a, b, c, d).sign;
   }
   Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                 const Point3& e) const {
+    return insphere_staged(a, b, c, d, e).sign;
+  }
+
+  // The integer determinants alone (stage 1 without the filter), for tests.
+  Sign orient2d_exact(const Point2& a, const Point2& b, const Point2& c) const {
+    return intdet::sign(intdet::orient2d<B2>(g2_.index(a), g2_.index(b), g2_.index(c)));
+  }
+  Sign incircle_exact(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    return intdet::sign(
+        intdet::incircle<B2>(g2_.index(a), g2_.index(b), g2_.index(c), g2_.index(d)));
+  }
+  Sign orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    return intdet::sign(
+        intdet::orient3d<B3>(g3_.index(a), g3_.index(b), g3_.index(c), g3_.index(d)));
+  }
+  Sign insphere_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                      const Point3& e) const {
     return intdet::sign(intdet::insphere<B3>(g3_.index(a), g3_.index(b), g3_.index(c),
                                              g3_.index(d), g3_.index(e)));
   }
@@ -281,9 +390,17 @@ class BasicIntegerKernel {
   }
 
  private:
+  template <class Grid, class P>
+  static bool on_grid(const Grid& g, std::span<const P> pts) {
+    for (const P& p : pts)
+      if (g.snap(p) != p) return false;
+    return true;
+  }
+
   IntegerGrid<2> g2_;
   IntegerGrid<3> g3_;
   bool fitted2_ = false, fitted3_ = false;
+  bool grid_points_only2_ = false, grid_points_only3_ = false;
   SnapStats last_;
 };
 

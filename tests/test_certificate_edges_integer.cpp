@@ -519,6 +519,228 @@ TEST_CASE("fitted integer kernels on binade-edge boxes agree with mp on the snap
   });
 }
 
+// ---- the integer kernel's filter (integer_kernel.hpp: FloatFilter on the
+// index differences, each rounded once to double) ----
+
+namespace {
+
+// On the unit grid (a default-constructed kernel, h = 1) the points are their
+// own indices, and integers up to 2^53 - 1 in magnitude are doubles: their
+// differences reach 2^54 - 2, and an odd one above 2^53 rounds on conversion.
+// Exactly degenerate sets of such points, one coordinate moved by m (0 or
+// +-2^[0, 24]): collinear and coplanar sets through the origin, and lattice
+// points on a circle of radius 5k (the (3, 4, 5) triangle times k) and on a
+// sphere of radius 3k ((1, 2, 2) times k), k odd and large enough for the
+// differences 7k and 5k to exceed 2^53.
+constexpr std::int64_t kMax = (std::int64_t{1} << 53) - 1;
+
+std::int64_t odd_in(std::int64_t lo, std::int64_t hi) { return *rc::gen::inRange(lo, hi) | 1; }
+
+std::int64_t nudge() {
+  if (*rc::gen::inRange(0, 5) == 0) return 0;
+  const std::int64_t m = std::int64_t{1} << *rc::gen::inRange(0, 25);
+  return (*rc::gen::arbitrary<bool>() ? 1 : -1) * (m + *rc::gen::inRange<std::int64_t>(0, m));
+}
+
+// Moves one coordinate of one point by nudge(), towards zero (so it stays on the grid).
+template <std::size_t N, std::size_t D>
+void move_one(std::array<std::array<std::int64_t, D>, N>& q) {
+  auto& x = q[*rc::gen::inRange<std::size_t>(0, N)][*rc::gen::inRange<std::size_t>(0, D)];
+  const std::int64_t m = std::abs(nudge());
+  x += x > 0 ? -m : m;
+}
+
+template <std::size_t N, std::size_t D>
+std::array<Point<D>, N> as_doubles(const std::array<std::array<std::int64_t, D>, N>& q) {
+  std::array<Point<D>, N> p;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) {
+      RC_ASSERT(std::abs(q[i][j]) <= kMax);
+      p[i][j] = static_cast<double>(q[i][j]);
+    }
+  return p;
+}
+
+// Whether some difference from the last point rounds when converted.
+template <std::size_t N, std::size_t D>
+bool rounds(const std::array<std::array<std::int64_t, D>, N>& q) {
+  for (std::size_t i = 0; i + 1 < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) {
+      const std::int64_t d = q[i][j] - q[N - 1][j];
+      if (static_cast<std::int64_t>(static_cast<double>(d)) != d) return true;
+    }
+  return false;
+}
+
+// N points s_i u (+ r_i v): a line (2D) or plane (3D) through the origin,
+// u_j, v_j odd, |s_i|, |r_i| in [lim / 2, lim]: differences across the
+// origin are odd as often as not and reach 2 kMax.
+template <std::size_t N, std::size_t D>
+std::array<std::array<std::int64_t, D>, N> flat_set() {
+  const auto odd = [] { return *rc::gen::elementOf(std::vector<std::int64_t>{-7, -5, -3, 3, 5, 7}); };
+  const std::int64_t lim = kMax / (D == 2 ? 7 : 14);  // |s u_j + r v_j| <= kMax
+  const auto big = [&] { return (*rc::gen::arbitrary<bool>() ? 1 : -1) * *rc::gen::inRange(lim / 2, lim + 1); };
+  std::array<std::int64_t, D> u, v{};
+  for (std::size_t j = 0; j < D; ++j) u[j] = odd(), v[j] = odd();
+  std::array<std::array<std::int64_t, D>, N> q;
+  for (auto& p : q) {
+    const std::int64_t s = big(), r = D == 3 ? big() : 0;
+    for (std::size_t j = 0; j < D; ++j) p[j] = s * u[j] + r * v[j];
+  }
+  return q;
+}
+
+// N distinct lattice points on the circle (2D) or sphere (3D) about the origin.
+template <std::size_t N, std::size_t D>
+std::array<std::array<std::int64_t, D>, N> round_set() {
+  std::vector<std::array<std::int64_t, D>> all;
+  const std::int64_t k = D == 2 ? odd_in(kMax / 7 + 1, kMax / 5) : odd_in(kMax / 5 + 1, kMax / 3);
+  const std::vector<std::array<std::int64_t, 3>> base =
+      D == 2 ? std::vector<std::array<std::int64_t, 3>>{{3, 4, 0}, {4, 3, 0}, {5, 0, 0}, {0, 5, 0}}
+             : std::vector<std::array<std::int64_t, 3>>{{1, 2, 2}, {2, 1, 2}, {2, 2, 1}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}};
+  for (const auto& b : base)
+    for (int signs = 0; signs < 8; ++signs) {
+      std::array<std::int64_t, D> p;
+      for (std::size_t j = 0; j < D; ++j) p[j] = (signs >> j & 1 ? -1 : 1) * b[j] * k;
+      if (std::find(all.begin(), all.end(), p) == all.end()) all.push_back(p);
+    }
+  const auto pick = *rc::gen::unique<std::vector<std::size_t>>(N, rc::gen::inRange<std::size_t>(0, all.size()));
+  std::array<std::array<std::int64_t, D>, N> q;
+  for (std::size_t i = 0; i < N; ++i) q[i] = all[pick[i]];
+  // On the sphere only 3k - (-2k) exceeds 2^53: a point (+-3k, 0, 0) as the
+  // base (the filter takes differences from the last point), where there is one.
+  for (std::size_t i = 0; i < N; ++i)
+    if (std::count(q[i].begin(), q[i].end(), 0) == D - 1) std::swap(q[i], q[N - 1]);
+  return q;
+}
+
+struct FilterTally {
+  int calls = 0, filtered = 0, exact = 0, filtered_rounded = 0;
+  void add(const Staged& s, bool rounded) {
+    ++calls;
+    (s.stage == 0 ? filtered : exact) += 1;
+    filtered_rounded += s.stage == 0 && rounded;
+  }
+};
+
+void check_filter_reach(const char* name, const FilterTally& t) {
+  INFO(name << ": ""calls " << t.calls << ", filtered " << t.filtered << " (" << t.filtered_rounded
+                << " with a rounded difference), exact " << t.exact);
+  CHECK(t.filtered >= t.calls / 10);
+  CHECK(t.exact >= t.calls / 10);
+  CHECK(t.filtered_rounded >= t.calls / 100);
+}
+
+}  // namespace
+
+// The kernel fitted to the call's points (fit_static_filter: every point a
+// grid point, so the filter may take the coordinates as they are).
+template <std::size_t N, std::size_t D>
+BasicIntegerKernel<62, 62> promised(const std::array<Point<D>, N>& p) {
+  BasicIntegerKernel<62, 62> k;
+  k.fit_static_filter(std::span<const Point<D>>(p.data(), N));
+  RC_ASSERT(k.grid_points_only(D));
+  return k;
+}
+
+TEST_CASE("the integer kernel's filter at its edges agrees with its integer determinants and mp",
+          "[certificate][integer][rc]") {
+  const IntegerKernel k;  // unit grids
+  FilterTally o2, ic, o3, is, on_grid;
+  rc::prop("orient2d, incircle, orient3d, insphere on moved degenerate sets", [&] {
+    for (int batch = 0; batch < 10; ++batch) {
+      auto l = flat_set<3, 2>();
+      move_one(l);
+      const auto a = as_doubles(l);
+      const Staged s2 = k.orient2d_staged(a[0], a[1], a[2]);
+      RC_ASSERT(s2.sign == k.orient2d_exact(a[0], a[1], a[2]));
+      RC_ASSERT(s2.sign == mp.orient2d(a[0], a[1], a[2]));
+      o2.add(s2, rounds(l));
+      const Staged g2 = promised(a).orient2d_staged(a[0], a[1], a[2]);
+      RC_ASSERT(g2.sign == s2.sign);
+      on_grid.add(g2, rounds(l));
+
+      auto c = round_set<4, 2>();
+      move_one(c);
+      const auto b = as_doubles(c);
+      const Staged sc = k.incircle_staged(b[0], b[1], b[2], b[3]);
+      RC_ASSERT(sc.sign == k.incircle_exact(b[0], b[1], b[2], b[3]));
+      RC_ASSERT(sc.sign == mp.incircle(b[0], b[1], b[2], b[3]));
+      ic.add(sc, rounds(c));
+      const Staged gc = promised(b).incircle_staged(b[0], b[1], b[2], b[3]);
+      RC_ASSERT(gc.sign == sc.sign);
+      on_grid.add(gc, rounds(c));
+
+      auto f = flat_set<4, 3>();
+      move_one(f);
+      const auto d = as_doubles(f);
+      const Staged s3 = k.orient3d_staged(d[0], d[1], d[2], d[3]);
+      RC_ASSERT(s3.sign == k.orient3d_exact(d[0], d[1], d[2], d[3]));
+      RC_ASSERT(s3.sign == mp.orient3d(d[0], d[1], d[2], d[3]));
+      o3.add(s3, rounds(f));
+      const Staged g3 = promised(d).orient3d_staged(d[0], d[1], d[2], d[3]);
+      RC_ASSERT(g3.sign == s3.sign);
+      on_grid.add(g3, rounds(f));
+
+      auto r = round_set<5, 3>();
+      move_one(r);
+      const auto e = as_doubles(r);
+      const Staged ss = k.insphere_staged(e[0], e[1], e[2], e[3], e[4]);
+      RC_ASSERT(ss.sign == k.insphere_exact(e[0], e[1], e[2], e[3], e[4]));
+      RC_ASSERT(ss.sign == mp.insphere(e[0], e[1], e[2], e[3], e[4]));
+      is.add(ss, rounds(r));
+      const Staged gs = promised(e).insphere_staged(e[0], e[1], e[2], e[3], e[4]);
+      RC_ASSERT(gs.sign == ss.sign);
+      on_grid.add(gs, rounds(r));
+    }
+  });
+  check_filter_reach("orient2d", o2);
+  check_filter_reach("incircle", ic);
+  check_filter_reach("orient3d", o3);
+  check_filter_reach("insphere", is);
+  check_filter_reach("on grid points", on_grid);
+}
+
+TEST_CASE("every grid index of a double is itself a double (one rounding in the filter)",
+          "[certificate][integer][rc]") {
+  rc::prop("indices of binade-edge coordinates on grids fitted to binade-edge boxes", [] {
+    std::vector<Point3> box{{binade_edge(), binade_edge(), binade_edge()},
+                            {binade_edge(), binade_edge(), binade_edge()}};
+    const auto k = IntegerKernel::fit<3>(std::span<const Point3>(box));
+    for (int t = 0; t < 20; ++t)
+      for (int j = 0; j < 3; ++j) {
+        const std::int64_t i = k.grid3().index(binade_edge(), j);
+        RC_ASSERT(static_cast<std::int64_t>(static_cast<double>(i)) == i);
+      }
+  });
+}
+
+TEST_CASE("the integer kernel takes coordinates as they are only for grid points",
+          "[certificate][integer]") {
+  // (1, 0.4) snaps to (1, 0) on the unit grid: collinear with (0, 0), (2, 0)
+  // for the kernel, though the double determinant is positive.
+  const std::array<Point2, 3> off{{{0, 0}, {2, 0}, {1, 0.4}}};
+  IntegerKernel k;
+  k.fit_static_filter(std::span<const Point2>(off));
+  CHECK_FALSE(k.grid_points_only(2));
+  CHECK(k.orient2d(off[0], off[1], off[2]) == Sign::zero);
+  const std::array<Point3, 4> off3{{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0.4}}};
+  k.fit_static_filter(std::span<const Point3>(off3));
+  CHECK_FALSE(k.grid_points_only(3));
+  CHECK(k.orient3d(off3[0], off3[1], off3[2], off3[3]) == Sign::zero);
+  // Fitting the grid anew (snap_all) forgets a promise checked on the unit grid.
+  std::vector<Point2> on{{0, 0}, {2, 0}, {1, 1}};
+  IntegerKernel fresh;
+  fresh.fit_static_filter(std::span<const Point2>(on));
+  CHECK(fresh.grid_points_only(2));
+  fresh.snap_all(on);
+  CHECK_FALSE(fresh.grid_points_only(2));
+  // without_static_filter() drops the promise.
+  k.fit_static_filter(std::span<const Point2>(on));
+  CHECK(k.grid_points_only(2));
+  CHECK_FALSE(k.without_static_filter().grid_points_only(2));
+}
+
 // ---- perturbed<K>::coplanar_incircle_exact ----
 
 namespace {

@@ -596,7 +596,7 @@ dlab_case(flip_empty RC 2 ERR "^dlab flip: empty.tri: not a triangulation of kit
 # counters show which kernel answered (its stages; none for float and epsilon);
 # unknown kernels are usage errors.
 set(flip_stage_adaptive "orient2d.A")
-set(flip_stage_integer "orient2d.integer")
+set(flip_stage_integer "orient2d.filter")  # its filter, followed by its integers (below)
 set(flip_stage_mp "orient2d.mp")
 foreach(k adaptive integer mp float epsilon)
   dlab_case(flip_kernel_${k} RC 0 ERR "^$" ARGS flip kite.txt kite_bad.txt --kernel ${k} -o kite_flip_${k}.tri --stats flip_${k}.json)
@@ -608,6 +608,7 @@ foreach(k adaptive integer mp float epsilon)
   endif()
   expect_json(flip_kernel_${k}_stats "${WORK}/flip_${k}.json" "\"algorithm\": \"flip\",\n  \"kernel\": \"${k}\",.*\"predicates\": \\{\n.*${stage_re}.*\"flips_total\": 1,.*\"outcome\": \"ok\",")
 endforeach()
+expect_json(flip_kernel_integer_stages "${WORK}/flip_integer.json" "\"orient2d.filter\": [1-9][0-9]*,\n    \"orient2d.integer\": [0-9]+,")
 dlab_case(flip_kernel_unknown RC 2 ERR "unknown kernel 'quad'" ARGS flip kite.txt kite_bad.txt --kernel quad)
 dlab_case(flip_stats_unwritable RC 2 ERR "cannot write '${WORK}/no/such/dir/f.json'" ARGS flip kite.txt kite_bad.txt --stats "${WORK}/no/such/dir/f.json")
 
