@@ -151,6 +151,14 @@ class IntegerGrid {
     return r;
   }
 
+  // The index of a grid point p of the box (snap(p) == p): p / h on each
+  // axis, an integer below 2^62 in magnitude and computed exactly.
+  IPoint grid_index(const Point<D>& p) const {
+    IPoint r;
+    for (int j = 0; j < D; ++j) r[j] = static_cast<Index>(scaled(p[j]));
+    return r;
+  }
+
   Point<D> snap(const Point<D>& p) const {
     Point<D> s;
     for (int j = 0; j < D; ++j) s[j] = value(index(p[j], j));

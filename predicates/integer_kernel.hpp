@@ -36,12 +36,16 @@
 // insphere 127 bits), the largest B for which every predicate fits __int128:
 // coarser grids, cheaper arithmetic.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
+#include "predicates/adaptive_kernel.hpp"
 #include "predicates/float_filter.hpp"
 #include "predicates/integer_grid.hpp"
 #include "predicates/kernel.hpp"
@@ -199,13 +203,40 @@ Sign sign(const T& v) {
   return static_cast<Sign>(sign_int(v));
 }
 
-// The filter's input: p - o per axis, exact in int64 (|p - o| <= 2^B - 1 <
-// 2^62), then rounded once by the conversion to double.
-template <std::size_t D>
-Point<D> rounded_difference(const std::array<std::int64_t, D>& p, const std::array<std::int64_t, D>& o) {
-  Point<D> r;
-  for (std::size_t j = 0; j < D; ++j) r[j] = static_cast<double>(p[j] - o[j]);
+// The filter's input: q_i - base per axis (base = the last point), exact in
+// int64 (|q_i - base| <= 2^B - 1 < 2^62), then rounded once by the conversion
+// to double; the base itself becomes the origin.
+template <std::size_t N, std::size_t D>
+std::array<Point<D>, N> rounded_differences(const std::array<std::array<std::int64_t, D>, N>& q) {
+  std::array<Point<D>, N> r;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) r[i][j] = static_cast<double>(q[i][j] - q[N - 1][j]);
   return r;
+}
+
+// The sign of det<B>(q) (q's base last), computed on the differences from
+// the base divided by their largest common power of two 2^g: the
+// determinants are homogeneous in the differences, so the sign stays, and
+// the shift of a multiple of 2^g is exact. Where every quotient is at most
+// 2^Small - 1, det<Small> holds it in narrower types (Small = 24 in 3D, 30 in
+// 2D: __int128): a lattice fitted to the grid has g about B - (its bits).
+template <int B, int Small, std::size_t N, std::size_t D, class Det>
+Sign reduced_sign(std::array<std::array<std::int64_t, D>, N> q, Det det) {
+  static_assert(Small <= B);
+  std::uint64_t bits = 0;
+  for (std::size_t i = 0; i + 1 < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) bits |= static_cast<std::uint64_t>(q[i][j] -= q[N - 1][j]);
+  q[N - 1] = {};
+  if (bits == 0) return Sign::zero;  // every point is the base
+  const int g = std::countr_zero(bits);
+  std::int64_t most = 0;
+  for (std::size_t i = 0; i + 1 < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) {
+      q[i][j] >>= g;
+      most = std::max(most, q[i][j] < 0 ? -q[i][j] : q[i][j]);
+    }
+  if (most <= (std::int64_t{1} << Small) - 1) return sign(det.template operator()<Small>(q));
+  return sign(det.template operator()<B>(q));
 }
 
 }  // namespace intdet
@@ -266,32 +297,38 @@ class BasicIntegerKernel {
   // about is one of pts (variants/driver.hpp, as for AdaptiveKernel). Where
   // each of them is a grid point (snap(p) == p, as after snap_all), its
   // coordinates are exactly h times its indices (integer_grid.hpp), so each
-  // determinant of them is h^degree > 0 times the integer one: the filter
-  // then runs on the coordinates themselves, with no indices to compute (it
-  // declines for range where h is tiny or huge, and the indices take over).
-  // Otherwise the kernel stays as it was.
+  // determinant of them is h^degree > 0 times the integer one and has its
+  // sign. Otherwise the kernel stays as it was.
   void fit_static_filter(std::span<const Point2> pts) { grid_points_only2_ = on_grid(g2_, pts); }
-  void fit_static_filter(std::span<const Point3> pts) { grid_points_only3_ = on_grid(g3_, pts); }
+  void fit_static_filter(std::span<const Point3> pts) {
+    grid_points_only3_ = on_grid(g3_, pts);
+    if (grid_points_only3_) first_.fit_static_filter(pts);
+  }
   bool grid_points_only(int dim) const { return dim == 2 ? grid_points_only2_ : grid_points_only3_; }
   // The same kernel without that promise (for points a caller makes itself).
   BasicIntegerKernel without_static_filter() const {
     BasicIntegerKernel k = *this;
     k.grid_points_only2_ = k.grid_points_only3_ = false;
+    k.first_ = AdaptiveKernel{};
     return k;
   }
 
-  // The filter (stage 0, "filter") answers before the integer determinant
-  // (stage 1, "integer"): on grid points as above, else FloatFilter
-  // (predicates/float_filter.hpp) on the index differences rounded to double,
-  // with the base point at the origin. Its bound assumes of each coordinate
-  // difference only |computed - exact| <= u |computed|, which one rounding of
-  // an exact integer gives (every index is a double, so converting the indices
-  // first and subtracting rounds once too); the differences from the origin
-  // are the inputs themselves, exactly. So a sign it decides is the sign of
-  // the integer determinant (a zero only when every difference on an axis is
-  // 0). Every nonzero |difference| lies in [1, 2^62), inside each of its range
-  // guards: it never declines for range.
+  // A floating-point filter (stage 0, "filter") answers before the integer
+  // determinant (stage 1, "integer"), as CGAL's Epeck filters first:
+  // - on grid points (the promise above): AdaptiveKernel's first stage on the
+  //   coordinates (its static orient3d filter fitted to the same points), an
+  //   exact sign of their determinant where it answers;
+  // - elsewhere: FloatFilter (predicates/float_filter.hpp) on the index
+  //   differences rounded to double, with the base point at the origin. Its
+  //   bound assumes of each coordinate difference only |computed - exact| <=
+  //   u |computed|, which one rounding of an exact integer gives; the
+  //   differences from the origin are the inputs themselves, exactly. So a
+  //   sign it decides is the integer determinant's (a zero only when every
+  //   difference on an axis is 0). Every nonzero |difference| lies in [1,
+  //   2^62), inside each of its range guards: it never declines for range.
   static constexpr std::array<std::string_view, 2> stage_names{"filter", "integer"};
+  // The budgets of the integer stage's narrow path (intdet::reduced_sign).
+  static constexpr int kSmall2 = B2 < 30 ? B2 : 30, kSmall3 = B3 < 24 ? B3 : 24;
   static_assert([] {
     for (const auto& s : {filter_bound::orient2d_spec, filter_bound::incircle_spec,
                           filter_bound::orient3d_spec, filter_bound::insphere_spec})
@@ -300,46 +337,41 @@ class BasicIntegerKernel {
   }());
 
   Staged orient2d_staged(const Point2& a, const Point2& b, const Point2& c) const {
+    constexpr auto det = []<int B>(const auto& q) { return intdet::orient2d<B>(q[0], q[1], q[2]); };
     if (grid_points_only2_)
-      if (const auto s = FloatFilter{}.orient2d(a, b, c)) return {*s, 0};
-    const auto ia = g2_.index(a), ib = g2_.index(b), ic = g2_.index(c);
-    using intdet::rounded_difference;
-    if (const auto s = FloatFilter{}.orient2d(rounded_difference(ia, ic), rounded_difference(ib, ic), Point2{}))
-      return {*s, 0};
-    return {intdet::sign(intdet::orient2d<B2>(ia, ib, ic)), 1};
+      return first_then([&](auto rest) { return AdaptiveKernel::orient2d_first_then(a, b, c, rest); },
+                        [&](const auto&... x) { return integer_stage<B2, kSmall2>(det, g2_.grid_index(x)...); });
+    return filter_then<B2, kSmall2>(
+        [](const auto&... x) { return FloatFilter{}.orient2d(x...); }, det, g2_.index(a), g2_.index(b),
+        g2_.index(c));
   }
   Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    constexpr auto det = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
     if (grid_points_only2_)
-      if (const auto s = FloatFilter{}.incircle(a, b, c, d)) return {*s, 0};
-    const auto ia = g2_.index(a), ib = g2_.index(b), ic = g2_.index(c), id = g2_.index(d);
-    using intdet::rounded_difference;
-    if (const auto s = FloatFilter{}.incircle(rounded_difference(ia, id), rounded_difference(ib, id),
-                                              rounded_difference(ic, id), Point2{}))
-      return {*s, 0};
-    return {intdet::sign(intdet::incircle<B2>(ia, ib, ic, id)), 1};
+      return first_then([&](auto rest) { return AdaptiveKernel::incircle_first_then(a, b, c, d, rest); },
+                        [&](const auto&... x) { return integer_stage<B2, kSmall2>(det, g2_.grid_index(x)...); });
+    return filter_then<B2, kSmall2>(
+        [](const auto&... x) { return FloatFilter{}.incircle(x...); }, det, g2_.index(a), g2_.index(b),
+        g2_.index(c), g2_.index(d));
   }
   Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    constexpr auto det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
     if (grid_points_only3_)
-      if (const auto s = FloatFilter{}.orient3d(a, b, c, d)) return {*s, 0};
-    const auto ia = g3_.index(a), ib = g3_.index(b), ic = g3_.index(c), id = g3_.index(d);
-    using intdet::rounded_difference;
-    if (const auto s = FloatFilter{}.orient3d(rounded_difference(ia, id), rounded_difference(ib, id),
-                                              rounded_difference(ic, id), Point3{}))
-      return {*s, 0};
-    return {intdet::sign(intdet::orient3d<B3>(ia, ib, ic, id)), 1};
+      return first_then([&](auto rest) { return first_.orient3d_first_then(a, b, c, d, rest); },
+                        [&](const auto&... x) { return integer_stage<B3, kSmall3>(det, g3_.grid_index(x)...); });
+    return filter_then<B3, kSmall3>(
+        [](const auto&... x) { return FloatFilter{}.orient3d(x...); }, det, g3_.index(a), g3_.index(b),
+        g3_.index(c), g3_.index(d));
   }
   Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                          const Point3& e) const {
+    constexpr auto det = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
     if (grid_points_only3_)
-      if (const auto s = FloatFilter{}.insphere(a, b, c, d, e)) return {*s, 0};
-    const auto ia = g3_.index(a), ib = g3_.index(b), ic = g3_.index(c), id = g3_.index(d),
-               ie = g3_.index(e);
-    using intdet::rounded_difference;
-    if (const auto s = FloatFilter{}.insphere(rounded_difference(ia, ie), rounded_difference(ib, ie),
-                                              rounded_difference(ic, ie), rounded_difference(id, ie),
-                                              Point3{}))
-      return {*s, 0};
-    return {intdet::sign(intdet::insphere<B3>(ia, ib, ic, id, ie)), 1};
+      return first_then([&](auto rest) { return AdaptiveKernel::insphere_first_then(a, b, c, d, e, rest); },
+                        [&](const auto&... x) { return integer_stage<B3, kSmall3>(det, g3_.grid_index(x)...); });
+    return filter_then<B3, kSmall3>(
+        [](const auto&... x) { return FloatFilter{}.insphere(x...); }, det, g3_.index(a), g3_.index(b),
+        g3_.index(c), g3_.index(d), g3_.index(e));
   }
 
   Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const {
@@ -390,6 +422,30 @@ class BasicIntegerKernel {
   }
 
  private:
+  // The integer stage on indices q (the base last).
+  template <int B, int Small, class Det, class... I>
+  static Staged integer_stage(Det det, const I&... q) {
+    return {intdet::reduced_sign<B, Small>(std::array{q...}, det), 1};
+  }
+  // first(rest): AdaptiveKernel's first stage on grid points, calling rest
+  // (the integer stage, on their indices) where it cannot decide.
+  template <class First, class Rest>
+  static Staged first_then(First first, Rest rest) {
+    bool integer = false;
+    const Staged s = first([&](const auto&... x) {
+      integer = true;
+      return rest(x...);
+    });
+    return {s.sign, static_cast<unsigned char>(integer ? 1 : 0)};
+  }
+  // FloatFilter on the rounded index differences, then the integer stage.
+  template <int B, int Small, class Filter, class Det, class... I>
+  static Staged filter_then(Filter filter, Det det, const I&... q) {
+    const std::array indices{q...};
+    if (const auto s = std::apply(filter, intdet::rounded_differences(indices))) return {*s, 0};
+    return {intdet::reduced_sign<B, Small>(indices, det), 1};
+  }
+
   template <class Grid, class P>
   static bool on_grid(const Grid& g, std::span<const P> pts) {
     for (const P& p : pts)
@@ -401,6 +457,7 @@ class BasicIntegerKernel {
   IntegerGrid<3> g3_;
   bool fitted2_ = false, fitted3_ = false;
   bool grid_points_only2_ = false, grid_points_only3_ = false;
+  AdaptiveKernel first_;  // the first stages on grid points, fitted with the promise
   SnapStats last_;
 };
 

@@ -17,6 +17,7 @@
 //    included), integer and mp, against the circumcircle in exact rationals.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -713,6 +714,66 @@ TEST_CASE("every grid index of a double is itself a double (one rounding in the 
         RC_ASSERT(static_cast<std::int64_t>(static_cast<double>(i)) == i);
       }
   });
+}
+
+namespace {
+
+// Points base + 2^g c_i, the c_i's coordinates 0, +-1 or at the edge of the
+// narrow budget 2^Small - 1 (and a bit or two past it), as doubles: exact,
+// |base| <= 2^51 and |2^g c| <= 2^52.
+template <std::size_t N, std::size_t D, int Small>
+std::array<std::array<std::int64_t, D>, N> narrow_edge_points() {
+  const int g = *rc::gen::inRange(0, 52 - (Small + 2) + 1);
+  const std::vector<std::int64_t> m{0, 1, (std::int64_t{1} << Small) - 1, std::int64_t{1} << Small,
+                                    (std::int64_t{1} << (Small + 1)) + 1, (std::int64_t{1} << (Small + 2)) - 1};
+  const std::size_t cap = *rc::gen::inRange<std::size_t>(3, m.size() + 1);  // within the budget at 3
+  std::array<std::array<std::int64_t, D>, N> q;
+  for (std::size_t j = 0; j < D; ++j) q[N - 1][j] = *rc::gen::inRange(-(std::int64_t{1} << 51), std::int64_t{1} << 51);
+  for (std::size_t i = 0; i + 1 < N; ++i)
+    for (std::size_t j = 0; j < D; ++j)
+      q[i][j] = q[N - 1][j] + (*rc::gen::arbitrary<bool>() ? 1 : -1) * (m[*rc::gen::inRange<std::size_t>(0, cap)] << g);
+  return q;
+}
+
+}  // namespace
+
+TEST_CASE("the integer stage's narrow path at its budget's edge agrees with mp",
+          "[certificate][integer][rc]") {
+  // intdet::reduced_sign divides the differences by their largest common power
+  // of two and takes det<Small> (__int128) where every quotient is at most
+  // 2^Small - 1: corners of that box and just past it, times 2^g.
+  int narrow = 0, wide = 0;
+  const auto o2det = []<int B>(const auto& q) { return intdet::orient2d<B>(q[0], q[1], q[2]); };
+  const auto icdet = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
+  const auto o3det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
+  const auto isdet = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
+  rc::prop("orient2d, incircle (Small = 30), orient3d, insphere (Small = 24)", [&] {
+    const auto o2 = narrow_edge_points<3, 2, 30>();
+    const auto a = as_doubles(o2);
+    const Sign so2 = intdet::reduced_sign<62, 30>(o2, o2det);
+    RC_ASSERT(so2 == mp.orient2d(a[0], a[1], a[2]));
+    const auto ic = narrow_edge_points<4, 2, 30>();
+    const auto b = as_doubles(ic);
+    const Sign sic = intdet::reduced_sign<62, 30>(ic, icdet);
+    RC_ASSERT(sic == mp.incircle(b[0], b[1], b[2], b[3]));
+    const auto o3 = narrow_edge_points<4, 3, 24>();
+    const auto c = as_doubles(o3);
+    const Sign so3 = intdet::reduced_sign<62, 24>(o3, o3det);
+    RC_ASSERT(so3 == mp.orient3d(c[0], c[1], c[2], c[3]));
+    const auto is = narrow_edge_points<5, 3, 24>();
+    const auto d = as_doubles(is);
+    const Sign sis = intdet::reduced_sign<62, 24>(is, isdet);
+    RC_ASSERT(sis == mp.insphere(d[0], d[1], d[2], d[3], d[4]));
+    std::int64_t most = 0, bits = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        const std::int64_t x = is[i][j] - is[4][j];
+        bits |= x, most = std::max(most, std::abs(x));
+      }
+    if (bits != 0) ((most >> std::countr_zero(static_cast<std::uint64_t>(bits))) < (1 << 24) ? narrow : wide) += 1;
+  });
+  CHECK(narrow > 10);
+  CHECK(wide > 10);
 }
 
 TEST_CASE("the integer kernel takes coordinates as they are only for grid points",
