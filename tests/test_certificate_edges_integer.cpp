@@ -26,6 +26,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/catch.h>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "predicates/adaptive_kernel.hpp"
@@ -644,55 +645,42 @@ BasicIntegerKernel<62, 62> promised(const std::array<Point<D>, N>& p) {
   return k;
 }
 
+// One call on the points q (its base last): the kernel's stages against its
+// integer determinants alone and GMP, and the kernel promised q (on grid
+// points) against the kernel without the promise.
+template <std::size_t N, std::size_t D, class StagedF, class ExactF, class MpF>
+void check_call(const std::array<std::array<std::int64_t, D>, N>& q, StagedF staged, ExactF exact, MpF by_mp,
+                FilterTally& tally, FilterTally& on_grid) {
+  const auto p = as_doubles(q);
+  const auto call = [&](const auto& k, auto f) { return std::apply([&](const auto&... x) { return (k.*f)(x...); }, p); };
+  const IntegerKernel unit;  // unit grids
+  const Staged s = call(unit, staged);
+  RC_ASSERT(s.sign == call(unit, exact));
+  RC_ASSERT(s.sign == call(mp, by_mp));
+  tally.add(s, rounds(q));
+  const Staged g = call(promised(p), staged);
+  RC_ASSERT(g.sign == s.sign);
+  on_grid.add(g, rounds(q));
+}
+
 TEST_CASE("the integer kernel's filter at its edges agrees with its integer determinants and mp",
           "[certificate][integer][rc]") {
-  const IntegerKernel k;  // unit grids
+  using K = IntegerKernel;
   FilterTally o2, ic, o3, is, on_grid;
   rc::prop("orient2d, incircle, orient3d, insphere on moved degenerate sets", [&] {
     for (int batch = 0; batch < 10; ++batch) {
       auto l = flat_set<3, 2>();
       move_one(l);
-      const auto a = as_doubles(l);
-      const Staged s2 = k.orient2d_staged(a[0], a[1], a[2]);
-      RC_ASSERT(s2.sign == k.orient2d_exact(a[0], a[1], a[2]));
-      RC_ASSERT(s2.sign == mp.orient2d(a[0], a[1], a[2]));
-      o2.add(s2, rounds(l));
-      const Staged g2 = promised(a).orient2d_staged(a[0], a[1], a[2]);
-      RC_ASSERT(g2.sign == s2.sign);
-      on_grid.add(g2, rounds(l));
-
+      check_call(l, &K::orient2d_staged, &K::orient2d_exact, &GmpKernel::orient2d, o2, on_grid);
       auto c = round_set<4, 2>();
       move_one(c);
-      const auto b = as_doubles(c);
-      const Staged sc = k.incircle_staged(b[0], b[1], b[2], b[3]);
-      RC_ASSERT(sc.sign == k.incircle_exact(b[0], b[1], b[2], b[3]));
-      RC_ASSERT(sc.sign == mp.incircle(b[0], b[1], b[2], b[3]));
-      ic.add(sc, rounds(c));
-      const Staged gc = promised(b).incircle_staged(b[0], b[1], b[2], b[3]);
-      RC_ASSERT(gc.sign == sc.sign);
-      on_grid.add(gc, rounds(c));
-
+      check_call(c, &K::incircle_staged, &K::incircle_exact, &GmpKernel::incircle, ic, on_grid);
       auto f = flat_set<4, 3>();
       move_one(f);
-      const auto d = as_doubles(f);
-      const Staged s3 = k.orient3d_staged(d[0], d[1], d[2], d[3]);
-      RC_ASSERT(s3.sign == k.orient3d_exact(d[0], d[1], d[2], d[3]));
-      RC_ASSERT(s3.sign == mp.orient3d(d[0], d[1], d[2], d[3]));
-      o3.add(s3, rounds(f));
-      const Staged g3 = promised(d).orient3d_staged(d[0], d[1], d[2], d[3]);
-      RC_ASSERT(g3.sign == s3.sign);
-      on_grid.add(g3, rounds(f));
-
+      check_call(f, &K::orient3d_staged, &K::orient3d_exact, &GmpKernel::orient3d, o3, on_grid);
       auto r = round_set<5, 3>();
       move_one(r);
-      const auto e = as_doubles(r);
-      const Staged ss = k.insphere_staged(e[0], e[1], e[2], e[3], e[4]);
-      RC_ASSERT(ss.sign == k.insphere_exact(e[0], e[1], e[2], e[3], e[4]));
-      RC_ASSERT(ss.sign == mp.insphere(e[0], e[1], e[2], e[3], e[4]));
-      is.add(ss, rounds(r));
-      const Staged gs = promised(e).insphere_staged(e[0], e[1], e[2], e[3], e[4]);
-      RC_ASSERT(gs.sign == ss.sign);
-      on_grid.add(gs, rounds(r));
+      check_call(r, &K::insphere_staged, &K::insphere_exact, &GmpKernel::insphere, is, on_grid);
     }
   });
   check_filter_reach("orient2d", o2);
