@@ -4,9 +4,9 @@
 // Each double coordinate is mapped to its index on the kernel's grid
 // (predicates/integer_grid.hpp: nearest grid point, clamped to the box), and
 // the determinant is computed exactly in integers, unless a floating-point
-// filter on the index differences decides its sign first (as CGAL's Epeck
-// filters before its exact numbers; see the predicates below). The answer is the exact
-// sign for the snapped points, and it is consistent for every input (the
+// filter decides its sign first (as CGAL's Epeck filters before its exact
+// numbers; see stage_names below). The answer is the exact sign for the
+// snapped points, and it is consistent for every input (the
 // snapping is a fixed function of the point). Snap first (`snap_all`) to
 // triangulate exactly the points the kernel sees.
 //
