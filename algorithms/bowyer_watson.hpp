@@ -54,7 +54,9 @@ class BowyerWatson {
   // fit a static filter (tests/test_static_filter.cpp checks the promise).
   static constexpr bool kernel_sees_given_points_only = true;
 
-  // Triangulates pts in the order given.  pts must outlive the call.
+  // Triangulates pts in the order given.  pts must outlive the call. The
+  // simplices are taken out of the mesh (Mesh::take_finite_simplices), which
+  // is empty afterwards.
   TriangulationResult run(std::span<const Point<D>> pts);
 
   const Mesh<D>& mesh() const { return mesh_; }
@@ -191,12 +193,8 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
           break;
         }
     }
-    res.simplices.reserve(mesh_.count_finite() * V);
-    mesh_.for_each_finite([&](std::uint32_t s) {
-      for (int j = 0; j < V; ++j) res.simplices.push_back(mesh_.vertex(s, j));
-    });
   }
-  res.merged_into = merged_;
+  res.merged_into = std::move(merged_);
   res.counters = {
       {"walk_steps", walk_steps_},
       {"scan_tests", scan_tests_},
@@ -209,6 +207,8 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
       {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_.bytes_reserved()},
   };
   cavity_sizes_.append_to(res.counters);
+  // Last, as it hands the mesh's memory over to the result (mesh() is then empty).
+  if (res.outcome == RunResult::Outcome::ok) res.simplices = mesh_.take_finite_simplices();
   return res;
 }
 

@@ -22,7 +22,9 @@
 //  - Deleted slots are kept on a free list and reused last-in-first-out (they
 //    are still in cache).  vertex(s, 0) == kDead marks a deleted slot.
 //  - mark(s): one uint32 per simplex for algorithms' stamps (cavity membership,
-//    visited flags): bump a counter instead of clearing sets.
+//    visited flags): bump a counter instead of clearing sets. 2D keeps it in
+//    the block's first padding word (no array of its own, and the same cache
+//    line as the simplex), 3D in an array beside the blocks.
 // The mesh never sees a coordinate: algorithms ask predicates on vertex ids.
 #pragma once
 #include <algorithm>
@@ -32,12 +34,23 @@
 #include <new>
 #include <string>
 #include <vector>
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace dlab {
 
 inline constexpr std::uint32_t kGhost = 0xFFFFFFFFu;  // the vertex at infinity
 inline constexpr std::uint32_t kDead = 0xFFFFFFFEu;   // vertex(s,0) of a deleted slot
 inline constexpr std::uint32_t kNoNeighbour = 0xFFFFFFFFu;
+
+// Where the mark words of a mesh are: mark(s) is base[s * stride].
+struct MarkWords {
+  std::uint32_t* base = nullptr;
+  std::size_t stride = 1;
+  std::uint32_t& operator[](std::uint32_t s) const { return base[s * stride]; }
+};
 
 // Allocator for the simplex array: 64-byte aligned, so that a 32-byte simplex
 // block never straddles two cache lines (large mallocs are only 16-aligned).
@@ -75,11 +88,11 @@ class Mesh {
   }
   void reserve(std::size_t simplices) {
     d_.reserve(simplices * S);  // S words per simplex (2D: padded to 8)
-    mark_.reserve(simplices);
+    if constexpr (!kMarkInBlock) mark_.reserve(simplices);
   }
 
   // Number of slots (live or free); simplex ids are < slots().
-  std::uint32_t slots() const { return static_cast<std::uint32_t>(mark_.size()); }
+  std::uint32_t slots() const { return static_cast<std::uint32_t>(d_.size() / S); }
   std::uint32_t live() const { return live_; }
 
   std::uint32_t vertex(std::uint32_t s, int i) const { return d_[std::size_t(s) * S + i]; }
@@ -105,11 +118,21 @@ class Mesh {
   // Ghost simplices carry the ghost vertex in slot D (invariant above).
   bool is_ghost(std::uint32_t s) const { return d_[std::size_t(s) * S + D] == kGhost; }
 
-  std::uint32_t mark(std::uint32_t s) const { return mark_[s]; }
-  void set_mark(std::uint32_t s, std::uint32_t m) { mark_[s] = m; }
+  std::uint32_t mark(std::uint32_t s) const {
+    if constexpr (kMarkInBlock)
+      return d_[std::size_t(s) * S + kMarkWord];
+    else
+      return mark_[s];
+  }
+  void set_mark(std::uint32_t s, std::uint32_t m) { marks()[s] = m; }
   // The mark words themselves (algorithms/simplex_guard.hpp's LockGuard keeps
   // its locks there); valid until the mesh grows.
-  std::uint32_t* marks() { return mark_.data(); }
+  MarkWords marks() {
+    if constexpr (kMarkInBlock)
+      return {d_.data() + kMarkWord, S};
+    else
+      return {mark_.data(), 1};
+  }
 
   // A new simplex with the given vertices and unset neighbours; reuses the most
   // recently freed slot first.
@@ -120,8 +143,7 @@ class Mesh {
       free_.pop_back();
     } else {
       s = slots();
-      d_.resize(d_.size() + S, kNoNeighbour);
-      mark_.push_back(0);
+      grow(1);
     }
     std::copy_n(verts, V, vertices(s));
     ++live_;
@@ -140,8 +162,7 @@ class Mesh {
   // create and destroy there and report it with adjust_live).
   std::uint32_t add_reserve(std::size_t n) {
     const std::uint32_t first = slots();
-    d_.resize(d_.size() + n * S, kNoNeighbour);
-    mark_.resize(mark_.size() + n, 0);
+    grow(n);
     for (std::uint32_t s = first; s < slots(); ++s) d_[std::size_t(s) * S] = kDead;
     return first;
   }
@@ -167,6 +188,13 @@ class Mesh {
     for_each_finite([&](std::uint32_t) { ++n; });
     return n;
   }
+
+  // The finite live simplices' vertices, V per simplex in slot order (as
+  // for_each_finite), and the mesh cleared. The result is written while the
+  // slot array is read, and the slot array's pages already read go back to
+  // the system (Linux: madvise MADV_DONTNEED), so the peak memory is about
+  // the mesh's own instead of mesh plus result (3D: 36 + 16 bytes per simplex).
+  std::vector<std::uint32_t> take_finite_simplices();
 
   // Links the facets of the given simplices that carry the same vertex set
   // (brute force: meant for the handful of simplices of an initial
@@ -207,12 +235,52 @@ class Mesh {
   // (a predicate) brings its neighbours into cache too (32 bytes in 3D).
   // 2D pads the 6 words to 8 so that no block straddles a cache line.
   static constexpr int S = D == 2 ? 8 : 2 * V;
+  static constexpr bool kMarkInBlock = S > 2 * V;
+  static constexpr int kMarkWord = 2 * V;  // its word in the block, when kMarkInBlock
+  // n new slots: unset neighbours, mark 0.
+  void grow(std::size_t n) {
+    const std::uint32_t first = slots();
+    d_.resize(d_.size() + n * S, kNoNeighbour);
+    if constexpr (kMarkInBlock)
+      for (std::uint32_t s = first; s < slots(); ++s) d_[std::size_t(s) * S + kMarkWord] = 0;
+    else
+      mark_.resize(mark_.size() + n, 0);
+  }
   static std::size_t nb_index(std::uint32_t enc) { return std::size_t(enc / V) * S + V + enc % V; }
   std::vector<std::uint32_t, CacheAligned<std::uint32_t>> d_;
-  std::vector<std::uint32_t> mark_;
+  std::vector<std::uint32_t> mark_;  // 3D's marks (2D: in the blocks)
   std::vector<std::uint32_t> free_;
   std::uint32_t live_ = 0;
 };
+
+template <int D>
+std::vector<std::uint32_t> Mesh<D>::take_finite_simplices() {
+  std::vector<std::uint32_t> out;
+  out.reserve(count_finite() * V);
+  std::vector<std::uint32_t>().swap(mark_);
+  std::vector<std::uint32_t>().swap(free_);
+#if defined(__linux__)
+  const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  // Whole pages of d_ strictly below `end` that are not yet released.
+  std::uintptr_t released = (reinterpret_cast<std::uintptr_t>(d_.data()) + page - 1) / page * page;
+  auto release_below = [&](const std::uint32_t* end) {
+    const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
+    if (to <= released) return;
+    madvise(reinterpret_cast<void*>(released), to - released, MADV_DONTNEED);
+    released = to;
+  };
+#endif
+  constexpr std::uint32_t kChunk = 1u << 15;  // slots between two releases (1 MiB in 3D)
+  for (std::uint32_t s = 0; s < slots(); ++s) {
+    if (alive(s) && !is_ghost(s)) out.insert(out.end(), vertices(s), vertices(s) + V);
+#if defined(__linux__)
+    if ((s + 1) % kChunk == 0) release_below(vertices(s + 1));
+#endif
+  }
+  decltype(d_)().swap(d_);
+  live_ = 0;
+  return out;
+}
 
 template <int D>
 std::string Mesh<D>::check_structure() const {

@@ -180,7 +180,7 @@ class ParallelBowyerWatson {
 
   struct Worker {
     Worker(const K& kernel, Mesh<D>& m, std::uint8_t owner)
-        : k(thread_kernel(kernel)), guard(nullptr, owner), slots(m) {}
+        : k(thread_kernel(kernel)), guard(MarkWords{}, owner), slots(m) {}
     K k;
     LockGuard guard;
     WorkerSlots<D> slots;

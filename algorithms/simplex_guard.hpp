@@ -26,6 +26,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithms/mesh.hpp"
+
 namespace dlab {
 
 struct NoGuard {
@@ -46,7 +48,7 @@ class LockGuard {
   static constexpr int kOwnerShift = 24;
   static constexpr std::uint32_t kStampLimit = (1u << kOwnerShift) - 1;
 
-  LockGuard(std::uint32_t* marks, std::uint8_t owner) : words_(marks), owner_(std::uint32_t(owner) << kOwnerShift) {}
+  LockGuard(MarkWords marks, std::uint8_t owner) : words_(marks), owner_(std::uint32_t(owner) << kOwnerShift) {}
 
   // True when s is held by this guard now (taken now or earlier).  Inlined:
   // a worker asks for every simplex it reads.
@@ -84,10 +86,10 @@ class LockGuard {
   }
 
   // The mark words move when the mesh grows (between parallel rounds).
-  void rebind(std::uint32_t* marks) { words_ = marks; }
+  void rebind(MarkWords marks) { words_ = marks; }
 
  private:
-  std::uint32_t* words_;
+  MarkWords words_;
   std::uint32_t owner_;              // owner id << kOwnerShift
   std::vector<std::uint32_t> held_;  // the first held_count_ entries
   std::size_t held_count_ = 0;

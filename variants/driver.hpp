@@ -145,20 +145,24 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
   RunResult r;
   r.dimension = D;
   r.points.dimension = D;
-  std::vector<Point<D>>& pts = points_of<D>(r.points);
-  pts = input;
+  // The points triangulated: the input, or a snapping kernel's copy of it
+  // (r.points). The input itself is copied into r.points only after the run,
+  // so that the copy is not part of the peak memory.
+  std::vector<Point<D>>& snapped = points_of<D>(r.points);
   K base{};
   if constexpr (SnappingKernel<K, D>) {
+    snapped = input;
     // The grid is fitted to the input and the added points together, so that
     // those are on it too (the input itself is snapped below).
     if constexpr (AddsPoints<Algo<K, D>, D>) {
-      std::vector<Point<D>> fit = with_added_points<Algo, K, D>(pts);
+      std::vector<Point<D>> fit = with_added_points<Algo, K, D>(snapped);
       base.snap_all(fit);
     }
-    const auto st = base.snap_all(pts);
+    const auto st = base.snap_all(snapped);
     r.snapping = {{"points_moved", st.moved}, {"points_merged", st.merged}};
     r.max_snap_displacement = st.max_displacement;
   }
+  const std::vector<Point<D>>& pts = SnappingKernel<K, D> ? snapped : input;
   if constexpr (StaticFilterKernel<K, D> && SeesGivenPointsOnly<Algo<K, D>>)
     base.fit_static_filter(std::span<const Point<D>>(with_added_points<Algo, K, D>(pts)));
   // Predicate calls are always counted (design.md section 5, --stats).
@@ -166,6 +170,7 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
     run_kernel<Algo, counted<perturbed<K>>, D>(counted<perturbed<K>>(perturbed<K>(base)), pts, o, r);
   else
     run_kernel<Algo, counted<K>, D>(counted<K>(base), pts, o, r);
+  if constexpr (!SnappingKernel<K, D>) snapped = input;
   return r;
 }
 

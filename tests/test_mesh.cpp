@@ -1,0 +1,85 @@
+// The mesh's storage (algorithms/mesh.hpp): the mark words (2D keeps them in
+// each block's padding, 3D in an array) and take_finite_simplices, which hands
+// the slot array's pages back while it writes the result. Both are checked on
+// meshes of a real triangulation (Lawson, whose mesh() outlives run()) large
+// enough to span many release chunks (2^15 slots each).
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "algorithms/lawson.hpp"
+#include "fuzz/generators.hpp"
+#include "predicates/adaptive_kernel.hpp"
+#include "predicates/perturbed.hpp"
+
+using namespace dlab;
+
+namespace {
+
+template <int D>
+Mesh<D> triangulated_mesh(std::size_t n) {
+  const std::vector<Point<D>> pts = gen::uniform<D>(n, 7);
+  Lawson<perturbed<AdaptiveKernel>, D> dt;
+  REQUIRE(dt.run(std::span<const Point<D>>(pts)).outcome == RunResult::Outcome::ok);
+  return dt.mesh();
+}
+
+// Every slot's words, read through the public accessors.
+template <int D>
+std::vector<std::uint32_t> all_words(const Mesh<D>& m) {
+  std::vector<std::uint32_t> w;
+  for (std::uint32_t s = 0; s < m.slots(); ++s) {
+    for (int i = 0; i <= D; ++i) w.push_back(m.vertex(s, i));
+    if (!m.alive(s)) continue;
+    for (int i = 0; i <= D; ++i) w.push_back(m.neighbour(s, i));
+  }
+  return w;
+}
+
+template <int D>
+void check_take(std::size_t n) {
+  Mesh<D> m = triangulated_mesh<D>(n);
+  REQUIRE(m.slots() > 4 * (1u << 15));
+  std::vector<std::uint32_t> expected;
+  m.for_each_finite([&](std::uint32_t s) {
+    for (int i = 0; i <= D; ++i) expected.push_back(m.vertex(s, i));
+  });
+  const std::vector<std::uint32_t> taken = m.take_finite_simplices();
+  CHECK(taken == expected);  // a page released before it was read reads as zeros
+  CHECK(m.slots() == 0);
+  CHECK(m.live() == 0);
+}
+
+template <int D>
+void check_marks(std::size_t n) {
+  Mesh<D> m = triangulated_mesh<D>(n);
+  const std::vector<std::uint32_t> before = all_words(m);
+  for (std::uint32_t s = 0; s < m.slots(); ++s) m.set_mark(s, 0xA5000000u ^ s);
+  // A mark word that overlapped a vertex or a neighbour would change them.
+  CHECK(all_words(m) == before);
+  CHECK(m.check_structure().empty());
+  bool all_read_back = true;
+  for (std::uint32_t s = 0; s < m.slots(); ++s) all_read_back = all_read_back && m.mark(s) == (0xA5000000u ^ s);
+  CHECK(all_read_back);
+  // The LockGuard's view of the same words.
+  const MarkWords words = m.marks();
+  CHECK(words[m.slots() - 1] == (0xA5000000u ^ (m.slots() - 1)));
+  // Slots added at the end (create's path too, once the free list is empty)
+  // start with mark 0, below every stamp and lock.
+  const std::uint32_t first = m.add_reserve(3);
+  for (std::uint32_t s = first; s < first + 3; ++s) CHECK(m.mark(s) == 0);
+}
+
+}  // namespace
+
+TEST_CASE("mesh: take_finite_simplices equals for_each_finite and empties the mesh", "[mesh]") {
+  check_take<2>(70000);
+  check_take<3>(30000);
+}
+
+TEST_CASE("mesh: marks are per slot, start at 0 and touch no other word", "[mesh]") {
+  check_marks<2>(70000);
+  check_marks<3>(30000);
+}
