@@ -109,6 +109,8 @@ class George {
   // (tests/test_static_filter.cpp checks the promise).
   static constexpr bool kernel_sees_given_points_only = true;
 
+  // The simplices are taken out of the mesh (Mesh::take_finite_simplices),
+  // which is empty afterwards.
   TriangulationResult run(std::span<const Point<D>> pts);
 
   const Mesh<D>& mesh() const { return mesh_; }
@@ -473,18 +475,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
       break;
     }
   }
-  if (res.outcome == RunResult::Outcome::ok) {
-    res.simplices.reserve(mesh_.count_finite() * V);
-    mesh_.for_each_finite([&](std::uint32_t s) {
-      for (int j = 0; j < V; ++j)
-        if (mesh_.vertex(s, j) >= n) {
-          ++box_removed_;
-          return;
-        }
-      for (int j = 0; j < V; ++j) res.simplices.push_back(mesh_.vertex(s, j));
-    });
-  }
-  res.merged_into = merged_;
+  res.merged_into = std::move(merged_);
   res.counters = {
       {"walk_steps", walk_steps_},
       {"base_simplices", base_total_},
@@ -505,6 +496,14 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
       {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_.bytes_reserved() + spheres_.bytes_reserved()},
   };
   cavity_sizes_.append_to(res.counters);
+  // Last, as it hands the mesh's memory over to the result (mesh() is then
+  // empty); the simplices of the enclosing box's corners are left out.
+  if (res.outcome == RunResult::Outcome::ok)
+    res.simplices = mesh_.take_finite_simplices([&](const std::uint32_t* v) {
+      const bool keep = std::all_of(v, v + V, [&](std::uint32_t id) { return id < n; });
+      box_removed_ += keep ? 0 : 1;
+      return keep;
+    });
   if (opt_.enclosing_box) res.counters.push_back({"box_simplices_removed", box_removed_});
   return res;
 }

@@ -190,11 +190,16 @@ class Mesh {
   }
 
   // The finite live simplices' vertices, V per simplex in slot order (as
-  // for_each_finite), and the mesh cleared. The result is written while the
-  // slot array is read, and the slot array's pages already read go back to
-  // the system (Linux: madvise MADV_DONTNEED), so the peak memory is about
-  // the mesh's own instead of mesh plus result (3D: 36 + 16 bytes per simplex).
-  std::vector<std::uint32_t> take_finite_simplices();
+  // for_each_finite), of those for which keep(vertices) holds; the mesh is
+  // cleared. The result is written while the slot array is read, and the slot
+  // array's pages already read go back to the system (Linux: madvise
+  // MADV_DONTNEED), so the peak memory is about the mesh's own instead of
+  // mesh plus result (3D: 36 + 16 bytes per simplex).
+  struct KeepAll {
+    bool operator()(const std::uint32_t*) const { return true; }
+  };
+  template <class Keep = KeepAll>
+  std::vector<std::uint32_t> take_finite_simplices(Keep keep = {});
 
   // Links the facets of the given simplices that carry the same vertex set
   // (brute force: meant for the handful of simplices of an initial
@@ -254,7 +259,8 @@ class Mesh {
 };
 
 template <int D>
-std::vector<std::uint32_t> Mesh<D>::take_finite_simplices() {
+template <class Keep>
+std::vector<std::uint32_t> Mesh<D>::take_finite_simplices(Keep keep) {
   std::vector<std::uint32_t> out;
   out.reserve(count_finite() * V);
   std::vector<std::uint32_t>().swap(mark_);
@@ -272,7 +278,7 @@ std::vector<std::uint32_t> Mesh<D>::take_finite_simplices() {
 #endif
   constexpr std::uint32_t kChunk = 1u << 15;  // slots between two releases (1 MiB in 3D)
   for (std::uint32_t s = 0; s < slots(); ++s) {
-    if (alive(s) && !is_ghost(s)) out.insert(out.end(), vertices(s), vertices(s) + V);
+    if (alive(s) && !is_ghost(s) && keep(vertices(s))) out.insert(out.end(), vertices(s), vertices(s) + V);
 #if defined(__linux__)
     if ((s + 1) % kChunk == 0) release_below(vertices(s + 1));
 #endif

@@ -128,9 +128,12 @@ int cmd_triangulate(int argc, char** argv) {
     return cl.usage_error(e.what());
   }
 
+  // run() takes the points (no second copy of a large input) and returns them
+  // in res.points; after an exception they are still in `points`.
+  const std::size_t input_points = points.size();
   RunResult res;
   try {
-    res = run(points, opt);
+    res = run(std::move(points), opt);
   } catch (const UsageError& e) {
     return cl.usage_error(e.what());
   } catch (const std::exception& e) {  // an algorithm that throws has failed, not crashed
@@ -141,10 +144,10 @@ int cmd_triangulate(int argc, char** argv) {
   }
   // The run's peak memory, before the validator's.
   const std::uint64_t peak_rss = io::peak_rss_bytes();
-  if (res.points.size() != points.size()) res.points = points;  // e.g. after an exception
-  res.dimension = points.dimension;
+  if (res.points.size() != input_points) res.points = std::move(points);  // after an exception
+  res.dimension = res.points.dimension;
   announce_snapping("triangulate", res);
-  const Outcome outcome = classify(points, res, pair_is_exact(opt),
+  const Outcome outcome = classify(res.points, res, pair_is_exact(opt),
                                    validate ? Validate::always : Validate::unless_exact);
   print_outcome("triangulate", outcome, describe_pair(opt));
   try {
@@ -152,7 +155,7 @@ int cmd_triangulate(int argc, char** argv) {
     const auto format = decimal ? io::FloatFormat::decimal : io::FloatFormat::hex;
     if (points_out) points_out->write([&](std::ostream& out) { io::write_points(out, res.points, format); });
     if (stats_out) {
-      const io::StatsRecord rec = stats_record(opt, points.size(), res, outcome, peak_rss);
+      const io::StatsRecord rec = stats_record(opt, input_points, res, outcome, peak_rss);
       stats_out->write([&](std::ostream& out) { io::write_stats_json(out, rec); });
     }
   } catch (const UsageError& e) {

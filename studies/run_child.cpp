@@ -59,13 +59,18 @@ nlohmann::json counters_json(const Counters& c) {
   return a;
 }
 
-nlohmann::json run_dlab(const PointSet& pts, const RunSpec& s, double timeout) {
+// Takes the points, as `dlab triangulate` does (the run's memory is then
+// that command's): they come back in res.points, or stay in `pts` after an
+// exception.
+nlohmann::json run_dlab(PointSet&& pts, const RunSpec& s, double timeout) {
   const RunOptions opt = s.options();
+  const std::size_t input_points = pts.size();
+  const int dimension = pts.dimension;
   reset_peak_rss();
   fuzz::limit_cpu_for_next(timeout);
   RunResult res;
   try {
-    res = dlab::run(pts, opt);
+    res = dlab::run(std::move(pts), opt);
   } catch (const UsageError& e) {
     throw std::invalid_argument(e.what());  // a configuration the registry refuses
   } catch (const std::exception& e) {       // as dlab triangulate: an algorithm that throws has failed
@@ -74,14 +79,14 @@ nlohmann::json run_dlab(const PointSet& pts, const RunSpec& s, double timeout) {
     res.message = std::string("exception: ") + e.what();
   }
   const std::uint64_t rss = peak_rss();
-  res.dimension = pts.dimension;
-  if (res.points.size() != pts.size()) res.points = pts;
+  res.dimension = dimension;
+  if (res.points.size() != input_points) res.points = std::move(pts);  // after an exception
   fuzz::limit_cpu_for_next(timeout);
-  const Outcome o = classify(pts, res, s.exact_pair(), Validate::always);
+  const Outcome o = classify(res.points, res, s.exact_pair(), Validate::always);
   const bool built = res.outcome != RunResult::Outcome::lower_dimensional;
   nlohmann::json m;
   m["distinct_points"] = res.distinct_points;
-  m["simplices"] = built ? res.simplices.size() / static_cast<std::size_t>(pts.dimension + 1) : 0;
+  m["simplices"] = built ? res.simplices.size() / static_cast<std::size_t>(dimension + 1) : 0;
   m["outcome"] = std::string(outcome_name(o.kind));
   m["message"] = o.detail;
   m["wall"] = res.seconds;
@@ -132,13 +137,14 @@ nlohmann::json run_external(const PointSet& pts, const RunSpec& s, double timeou
 [[noreturn]] void child_main(const StudyConfig& c, const RunSpec& s, int fd) {
   fuzz::enter_child_limits(c.memory_limit_mib << 20);
   try {
-    const PointSet pts = load_input(c.inputs.at(s.input), s.n, s.seed, c.path);
+    PointSet pts = load_input(c.inputs.at(s.input), s.n, s.seed, c.path);
     send(fd, {{"input_points", pts.size()}});
     // Test hook (tests/test_study.sh): the run with this id dies of SIGSEGV,
     // as an inexact kernel's run may, to check that it becomes outcome crash.
     if (const char* crash = std::getenv("DLAB_STUDY_CRASH_RUN"); crash && std::to_string(s.id) == crash)
       std::raise(SIGSEGV);
-    send(fd, s.is_baseline() ? run_external(pts, s, c.timeout_seconds) : run_dlab(pts, s, c.timeout_seconds));
+    send(fd, s.is_baseline() ? run_external(pts, s, c.timeout_seconds)
+                             : run_dlab(std::move(pts), s, c.timeout_seconds));
   } catch (const std::bad_alloc&) {
     _exit(fuzz::kOutOfMemoryExit);
   } catch (const std::exception& e) {  // ConfigError, std::invalid_argument

@@ -414,6 +414,16 @@ TEST_CASE("bw: insertion orders are permutations and deterministic", "[bw]") {
     auto a = insertion_order(std::span<const Point3>(p), o, 17);
     const auto b = insertion_order(std::span<const Point3>(p), o, 17);
     CHECK(a == b);
+    // apply_order: the gathered copy, then the points as they were.
+    std::vector<Point3> in_place = p, gathered(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) gathered[i] = p[a[i]];
+    for (bool cycles : {false, true}) {  // out of place, and the in-place fallback
+      std::vector<bool> scratch;
+      apply_order(in_place, std::span<const std::uint32_t>(a), false, scratch, cycles);
+      CHECK(in_place == gathered);
+      apply_order(in_place, std::span<const std::uint32_t>(a), true, scratch, cycles);
+      CHECK(in_place == p);
+    }
     std::sort(a.begin(), a.end());
     for (std::uint32_t i = 0; i < a.size(); ++i) REQUIRE(a[i] == i);
   }

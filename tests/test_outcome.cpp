@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -212,7 +213,42 @@ struct FailAfter {
   K k_;
 };
 
+// An algorithm that throws after looking at the (2D) points it is given.
+std::vector<Point2> seen_before_throw;
+template <class K, int D>
+struct ThrowMidRun {
+  explicit ThrowMidRun(const K& k) : k_(k) {}
+  TriangulationResult run(std::span<const Point<D>> pts) {
+    if constexpr (D == 2) seen_before_throw.assign(pts.begin(), pts.end());
+    throw std::runtime_error("thrown on purpose");
+  }
+  const K& kernel() const { return k_; }
+  K k_;
+};
+
 }  // namespace
+
+TEST_CASE("a run that takes the points gives them back in order, or leaves them as they were after a throw",
+          "[outcome][driver]") {
+  PointSet original;
+  original.dimension = 2;
+  for (int i = 0; i < 200; ++i) original.p2.push_back({double((i * 37) % 101), double((i * 53) % 97)});
+  RunOptions o;
+  o.kernel = "float";
+  o.policy = "strict";
+  o.order = "brio";
+  PointSet p = original;
+  CHECK_THROWS_AS((run_algorithm<ThrowMidRun, FloatKernel>(std::move(p), o)), std::runtime_error);
+  CHECK(seen_before_throw.size() == original.p2.size());
+  CHECK(seen_before_throw != original.p2);  // the algorithm saw them in BRIO order
+  CHECK(p.p2 == original.p2);                              // and they were put back
+  o.kernel = "adaptive";
+  o.policy = "sos";
+  PointSet q = original;
+  const RunResult r = run(std::move(q), o);
+  CHECK(r.outcome == RunResult::Outcome::ok);
+  CHECK(r.points.p2 == original.p2);
+}
 
 TEST_CASE("stats of a failed run: points inserted before the failure, apart from the distinct points",
           "[outcome][driver]") {

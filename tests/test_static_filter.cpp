@@ -313,7 +313,7 @@ TEST_CASE("the driver fits the static filter only on the promise", "[static]") {
   }
   // The same input without the promise: never the static stage.
   RunOptions bw;
-  const RunResult unfitted = driver_detail::run_dimension<NoPromise, AdaptiveKernel, 3>(pts, bw, true);
+  const RunResult unfitted = run_algorithm<NoPromise, AdaptiveKernel>(point_set<3>(pts), bw);
   CHECK(test::counter(unfitted.predicates, "orient3d") > 0);
   CHECK(test::counter(unfitted.predicates, "orient3d.static") == 0);
   CHECK(test::canonical_simplices<3>(unfitted.simplices) == want);

@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_bowyer_watson_adaptive(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<BowyerWatson, AdaptiveKernel>(points, options);
+RunResult run_bowyer_watson_adaptive(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<BowyerWatson, AdaptiveKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

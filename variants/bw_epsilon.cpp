@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_bowyer_watson_epsilon(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<BowyerWatson, EpsilonKernel>(points, options);
+RunResult run_bowyer_watson_epsilon(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<BowyerWatson, EpsilonKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_bowyer_watson_float(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<BowyerWatson, FloatKernel>(points, options);
+RunResult run_bowyer_watson_float(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<BowyerWatson, FloatKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

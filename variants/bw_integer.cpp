@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_bowyer_watson_integer(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<BowyerWatson, IntegerKernel>(points, options);
+RunResult run_bowyer_watson_integer(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<BowyerWatson, IntegerKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

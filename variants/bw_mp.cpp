@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_bowyer_watson_mp(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<BowyerWatson, MpKernel>(points, options);
+RunResult run_bowyer_watson_mp(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<BowyerWatson, MpKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

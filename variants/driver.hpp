@@ -31,6 +31,7 @@
 #include <optional>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "algorithms/locate.hpp"
@@ -79,19 +80,44 @@ std::size_t count_distinct(std::vector<Point<D>> pts) {
   return static_cast<std::size_t>(std::unique(pts.begin(), pts.end()) - pts.begin());
 }
 
+// Keeps a point vector in insertion order while it lives (apply_order), and
+// puts it back as it was when it goes, also when the run throws (in place if
+// memory is short then). The vector holds one copy of the points during the
+// run; the second, while it is reordered, comes before the mesh exists.
+template <int D>
+class InInsertionOrder {
+ public:
+  InInsertionOrder(std::vector<Point<D>>& pts, std::span<const std::uint32_t> order) : pts_(pts), order_(order) {
+    apply_order(pts_, order_, false, done_);
+  }
+  ~InInsertionOrder() { apply_order(pts_, order_, true, done_); }
+  InInsertionOrder(const InInsertionOrder&) = delete;
+  InInsertionOrder& operator=(const InInsertionOrder&) = delete;
+
+ private:
+  std::vector<Point<D>>& pts_;
+  std::span<const std::uint32_t> order_;
+  std::vector<bool> done_;
+};
+
+// Runs the algorithm on pts, which are put in insertion order for the run
+// (design.md section 7 item 7: ids are insertion positions) and restored
+// after it: no second copy of the points during the run.
 template <template <class, int> class Algo, class K, int D>
-void run_kernel(const K& k, const std::vector<Point<D>>& pts, const RunOptions& o, RunResult& r) {
+void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, RunResult& r) {
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
   const std::vector<std::uint32_t> order =
       insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads);
-  std::vector<Point<D>> seq(pts.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) seq[i] = pts[order[i]];
 
   Algo<K, D> algo(k);
   if constexpr (HasLocationScheme<Algo<K, D>>) algo.set_location(location_scheme(o.location));
   if constexpr (HasThreads<Algo<K, D>>) algo.set_threads(o.threads);
-  TriangulationResult t = algo.run(std::span<const Point<D>>(seq));
+  TriangulationResult t;
+  {
+    const InInsertionOrder<D> in_order(pts, order);
+    t = algo.run(std::span<const Point<D>>(pts));
+  }
 
   r.outcome = t.outcome;
   r.message = std::move(t.message);
@@ -140,14 +166,15 @@ std::vector<Point<D>> with_added_points(const std::vector<Point<D>>& pts) {
   return all;
 }
 
+// Triangulates `input` (the caller's, reordered during the run and restored
+// after it), which ends in r.points; a snapping kernel triangulates a snapped
+// copy instead, which is r.points, and leaves `input` as it was. After an
+// exception `input` is as it was.
 template <template <class, int> class Algo, class K, int D>
-RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o, bool sos) {
+RunResult run_dimension(std::vector<Point<D>>& input, const RunOptions& o, bool sos) {
   RunResult r;
   r.dimension = D;
   r.points.dimension = D;
-  // The points triangulated: the input, or a snapping kernel's copy of it
-  // (r.points). The input itself is copied into r.points only after the run,
-  // so that the copy is not part of the peak memory.
   std::vector<Point<D>>& snapped = points_of<D>(r.points);
   K base{};
   if constexpr (SnappingKernel<K, D>) {
@@ -162,7 +189,7 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
     r.snapping = {{"points_moved", st.moved}, {"points_merged", st.merged}};
     r.max_snap_displacement = st.max_displacement;
   }
-  const std::vector<Point<D>>& pts = SnappingKernel<K, D> ? snapped : input;
+  std::vector<Point<D>>& pts = SnappingKernel<K, D> ? snapped : input;
   if constexpr (StaticFilterKernel<K, D> && SeesGivenPointsOnly<Algo<K, D>>)
     base.fit_static_filter(std::span<const Point<D>>(with_added_points<Algo, K, D>(pts)));
   // Predicate calls are always counted (design.md section 5, --stats).
@@ -170,15 +197,17 @@ RunResult run_dimension(const std::vector<Point<D>>& input, const RunOptions& o,
     run_kernel<Algo, counted<perturbed<K>>, D>(counted<perturbed<K>>(perturbed<K>(base)), pts, o, r);
   else
     run_kernel<Algo, counted<K>, D>(counted<K>(base), pts, o, r);
-  if constexpr (!SnappingKernel<K, D>) snapped = input;
+  if constexpr (!SnappingKernel<K, D>) snapped = std::move(input);
   return r;
 }
 
 }  // namespace driver_detail
 
-// Entry point of one algorithm x kernel translation unit.
+// Entry point of one algorithm x kernel translation unit. The points are
+// taken (they end in the result's points, in their order); after an exception
+// they are left in `ps` as they were.
 template <template <class, int> class Algo, class K>
-RunResult run_algorithm(const PointSet& ps, const RunOptions& o) {
+RunResult run_algorithm(PointSet&& ps, const RunOptions& o) {
   bool sos;
   if (o.policy == "sos")
     sos = true;
@@ -192,6 +221,13 @@ RunResult run_algorithm(const PointSet& ps, const RunOptions& o) {
   if (ps.dimension == 2) return driver_detail::run_dimension<Algo, K, 2>(ps.p2, o, sos);
   if (ps.dimension == 3) return driver_detail::run_dimension<Algo, K, 3>(ps.p3, o, sos);
   throw UsageError("dimension must be 2 or 3, not " + std::to_string(ps.dimension));
+}
+
+// The same on a copy of the points.
+template <template <class, int> class Algo, class K>
+RunResult run_algorithm(const PointSet& ps, const RunOptions& o) {
+  PointSet copy = ps;
+  return run_algorithm<Algo, K>(std::move(copy), o);
 }
 
 }  // namespace dlab

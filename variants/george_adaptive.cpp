@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_george_adaptive(const PointSet& points, const RunOptions& options) {
-  return run_george<AdaptiveKernel>(points, options);
+RunResult run_george_adaptive(PointSet&& points, const RunOptions& options) {
+  return run_george<AdaptiveKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -10,8 +10,8 @@
 
 namespace dlab {
 
-RunResult run_george_epsilon(const PointSet& points, const RunOptions& options) {
-  return run_george<EpsilonKernel>(points, options);
+RunResult run_george_epsilon(PointSet&& points, const RunOptions& options) {
+  return run_george<EpsilonKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

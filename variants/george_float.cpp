@@ -10,8 +10,8 @@
 
 namespace dlab {
 
-RunResult run_george_float(const PointSet& points, const RunOptions& options) {
-  return run_george<FloatKernel>(points, options);
+RunResult run_george_float(PointSet&& points, const RunOptions& options) {
+  return run_george<FloatKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

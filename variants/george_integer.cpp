@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_george_integer(const PointSet& points, const RunOptions& options) {
-  return run_george<IntegerKernel>(points, options);
+RunResult run_george_integer(PointSet&& points, const RunOptions& options) {
+  return run_george<IntegerKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_george_mp(const PointSet& points, const RunOptions& options) {
-  return run_george<MpKernel>(points, options);
+RunResult run_george_mp(PointSet&& points, const RunOptions& options) {
+  return run_george<MpKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -115,12 +115,14 @@ std::uint64_t missing_ppm(const std::vector<Point<D>>& p, std::span<const std::u
 }  // namespace george_detail
 
 template <class K>
-RunResult run_george(const PointSet& points, const RunOptions& o) {
+RunResult run_george(PointSet&& points, const RunOptions& o) {
   RunResult r;
   if (o.enclosing_box)
-    r = o.exact_sphere ? run_algorithm<GeorgeBoxExactSphere, K>(points, o) : run_algorithm<GeorgeBox, K>(points, o);
+    r = o.exact_sphere ? run_algorithm<GeorgeBoxExactSphere, K>(std::move(points), o)
+                       : run_algorithm<GeorgeBox, K>(std::move(points), o);
   else
-    r = o.exact_sphere ? run_algorithm<GeorgeExactSphere, K>(points, o) : run_algorithm<George, K>(points, o);
+    r = o.exact_sphere ? run_algorithm<GeorgeExactSphere, K>(std::move(points), o)
+                       : run_algorithm<George, K>(std::move(points), o);
   if (r.outcome != RunResult::Outcome::ok) return r;
   auto report = std::make_shared<const ValidationReport>(validate(r.points, r.simplices));
   const ValidationReport& rep = *report;

@@ -5,8 +5,8 @@
 
 namespace dlab {
 
-RunResult run_lawson_adaptive(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Lawson, AdaptiveKernel>(points, options);
+RunResult run_lawson_adaptive(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Lawson, AdaptiveKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

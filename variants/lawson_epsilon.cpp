@@ -5,8 +5,8 @@
 
 namespace dlab {
 
-RunResult run_lawson_epsilon(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Lawson, EpsilonKernel>(points, options);
+RunResult run_lawson_epsilon(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Lawson, EpsilonKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

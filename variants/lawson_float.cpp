@@ -5,8 +5,8 @@
 
 namespace dlab {
 
-RunResult run_lawson_float(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Lawson, FloatKernel>(points, options);
+RunResult run_lawson_float(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Lawson, FloatKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -5,8 +5,8 @@
 
 namespace dlab {
 
-RunResult run_lawson_integer(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Lawson, IntegerKernel>(points, options);
+RunResult run_lawson_integer(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Lawson, IntegerKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -5,8 +5,8 @@
 
 namespace dlab {
 
-RunResult run_lawson_mp(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Lawson, MpKernel>(points, options);
+RunResult run_lawson_mp(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Lawson, MpKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

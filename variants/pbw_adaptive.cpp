@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_parallel_bowyer_watson_adaptive(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<ParallelBowyerWatson, AdaptiveKernel>(points, options);
+RunResult run_parallel_bowyer_watson_adaptive(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<ParallelBowyerWatson, AdaptiveKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

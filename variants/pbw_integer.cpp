@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_parallel_bowyer_watson_integer(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<ParallelBowyerWatson, IntegerKernel>(points, options);
+RunResult run_parallel_bowyer_watson_integer(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<ParallelBowyerWatson, IntegerKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

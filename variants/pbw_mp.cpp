@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_parallel_bowyer_watson_mp(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<ParallelBowyerWatson, MpKernel>(points, options);
+RunResult run_parallel_bowyer_watson_mp(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<ParallelBowyerWatson, MpKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -4,41 +4,42 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "variants/run.hpp"
 
 namespace dlab {
 
-RunResult run_bowyer_watson_adaptive(const PointSet&, const RunOptions&);
-RunResult run_bowyer_watson_float(const PointSet&, const RunOptions&);
-RunResult run_bowyer_watson_mp(const PointSet&, const RunOptions&);
-RunResult run_bowyer_watson_epsilon(const PointSet&, const RunOptions&);
-RunResult run_bowyer_watson_integer(const PointSet&, const RunOptions&);
-RunResult run_george_integer(const PointSet&, const RunOptions&);
-RunResult run_george_adaptive(const PointSet&, const RunOptions&);
-RunResult run_george_mp(const PointSet&, const RunOptions&);
-RunResult run_george_float(const PointSet&, const RunOptions&);
-RunResult run_george_epsilon(const PointSet&, const RunOptions&);
-RunResult run_lawson_adaptive(const PointSet&, const RunOptions&);
-RunResult run_lawson_float(const PointSet&, const RunOptions&);
-RunResult run_lawson_mp(const PointSet&, const RunOptions&);
-RunResult run_lawson_epsilon(const PointSet&, const RunOptions&);
-RunResult run_lawson_integer(const PointSet&, const RunOptions&);
-RunResult run_tanemura_adaptive(const PointSet&, const RunOptions&);
-RunResult run_tanemura_integer(const PointSet&, const RunOptions&);
-RunResult run_tanemura_mp(const PointSet&, const RunOptions&);
-RunResult run_tanemura_float(const PointSet&, const RunOptions&);
-RunResult run_tanemura_epsilon(const PointSet&, const RunOptions&);
-RunResult run_parallel_bowyer_watson_adaptive(const PointSet&, const RunOptions&);
-RunResult run_parallel_bowyer_watson_integer(const PointSet&, const RunOptions&);
-RunResult run_parallel_bowyer_watson_mp(const PointSet&, const RunOptions&);
+RunResult run_bowyer_watson_adaptive(PointSet&&, const RunOptions&);
+RunResult run_bowyer_watson_float(PointSet&&, const RunOptions&);
+RunResult run_bowyer_watson_mp(PointSet&&, const RunOptions&);
+RunResult run_bowyer_watson_epsilon(PointSet&&, const RunOptions&);
+RunResult run_bowyer_watson_integer(PointSet&&, const RunOptions&);
+RunResult run_george_integer(PointSet&&, const RunOptions&);
+RunResult run_george_adaptive(PointSet&&, const RunOptions&);
+RunResult run_george_mp(PointSet&&, const RunOptions&);
+RunResult run_george_float(PointSet&&, const RunOptions&);
+RunResult run_george_epsilon(PointSet&&, const RunOptions&);
+RunResult run_lawson_adaptive(PointSet&&, const RunOptions&);
+RunResult run_lawson_float(PointSet&&, const RunOptions&);
+RunResult run_lawson_mp(PointSet&&, const RunOptions&);
+RunResult run_lawson_epsilon(PointSet&&, const RunOptions&);
+RunResult run_lawson_integer(PointSet&&, const RunOptions&);
+RunResult run_tanemura_adaptive(PointSet&&, const RunOptions&);
+RunResult run_tanemura_integer(PointSet&&, const RunOptions&);
+RunResult run_tanemura_mp(PointSet&&, const RunOptions&);
+RunResult run_tanemura_float(PointSet&&, const RunOptions&);
+RunResult run_tanemura_epsilon(PointSet&&, const RunOptions&);
+RunResult run_parallel_bowyer_watson_adaptive(PointSet&&, const RunOptions&);
+RunResult run_parallel_bowyer_watson_integer(PointSet&&, const RunOptions&);
+RunResult run_parallel_bowyer_watson_mp(PointSet&&, const RunOptions&);
 
 namespace {
 
 struct Entry {
   const char* algorithm;
   const char* kernel;
-  RunResult (*run)(const PointSet&, const RunOptions&);
+  RunResult (*run)(PointSet&&, const RunOptions&);
 };
 
 const Entry kEntries[] = {
@@ -90,7 +91,7 @@ std::vector<std::string> algorithm_names() { return {std::begin(kAlgorithms), st
 std::vector<std::string> kernel_names() { return {std::begin(kKernels), std::end(kKernels)}; }
 bool kernel_is_exact(std::string_view kernel) { return kernel != "float" && kernel != "epsilon"; }
 
-RunResult run(const PointSet& points, const RunOptions& options) {
+RunResult run(PointSet&& points, const RunOptions& options) {
   const auto algos = algorithm_names();
   const auto kernels = kernel_names();
   if (std::find(algos.begin(), algos.end(), options.algorithm) == algos.end())
@@ -119,12 +120,17 @@ RunResult run(const PointSet& points, const RunOptions& options) {
     if (options.location != "walk") throw UsageError("--threads needs --location walk");
     if (options.threads > 255) throw UsageError("--threads must be in 1..255");
     for (const Entry& e : kParallelEntries)
-      if (options.kernel == e.kernel) return e.run(points, options);
+      if (options.kernel == e.kernel) return e.run(std::move(points), options);
   }
   for (const Entry& e : kEntries)
-    if (options.algorithm == e.algorithm && options.kernel == e.kernel) return e.run(points, options);
+    if (options.algorithm == e.algorithm && options.kernel == e.kernel) return e.run(std::move(points), options);
   throw UsageError("algorithm '" + options.algorithm + "' is not available with kernel '" +
                    options.kernel + "' yet");
+}
+
+RunResult run(const PointSet& points, const RunOptions& options) {
+  PointSet copy = points;
+  return run(std::move(copy), options);
 }
 
 }  // namespace dlab

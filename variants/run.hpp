@@ -110,7 +110,13 @@ struct RunResult {
   std::shared_ptr<const ValidationReport> validation;
 };
 
+// Triangulates `points` with the algorithm and kernel `options` name. The
+// first form copies them; the second takes them, so that a large input is not
+// held twice (`dlab triangulate`): they end in the result's `points`, in their
+// order (snapped by `integer`); after an exception they are left in `points`
+// as they were.
 RunResult run(const PointSet& points, const RunOptions& options);
+RunResult run(PointSet&& points, const RunOptions& options);
 
 std::vector<std::string> algorithm_names();
 std::vector<std::string> kernel_names();

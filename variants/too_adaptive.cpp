@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_tanemura_adaptive(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Tanemura, AdaptiveKernel>(points, options);
+RunResult run_tanemura_adaptive(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Tanemura, AdaptiveKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_tanemura_epsilon(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Tanemura, EpsilonKernel>(points, options);
+RunResult run_tanemura_epsilon(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Tanemura, EpsilonKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

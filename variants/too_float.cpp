@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_tanemura_float(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Tanemura, FloatKernel>(points, options);
+RunResult run_tanemura_float(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Tanemura, FloatKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_tanemura_integer(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Tanemura, IntegerKernel>(points, options);
+RunResult run_tanemura_integer(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Tanemura, IntegerKernel>(std::move(points), options);
 }
 
 }  // namespace dlab

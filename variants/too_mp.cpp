@@ -6,8 +6,8 @@
 
 namespace dlab {
 
-RunResult run_tanemura_mp(const PointSet& points, const RunOptions& options) {
-  return run_algorithm<Tanemura, MpKernel>(points, options);
+RunResult run_tanemura_mp(PointSet&& points, const RunOptions& options) {
+  return run_algorithm<Tanemura, MpKernel>(std::move(points), options);
 }
 
 }  // namespace dlab
