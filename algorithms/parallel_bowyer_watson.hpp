@@ -194,6 +194,12 @@ class ParallelBowyerWatson {
     std::uint64_t walk_steps = 0, cavity_total = 0, cavity_max = 0, created = 0, duplicates = 0,
                   boundary_max = 0, deferrals = 0;
     CavityHistogram cavity_sizes;
+    // A worker thread may leave the arena between two chunks of a round and
+    // another take its slot, and with it this worker.  oneTBB orders the two
+    // threads inside libtbb, where a race detector (ThreadSanitizer) does not
+    // see; an acquire at the start of each chunk and a release at its end
+    // show it that order.
+    std::atomic<std::uint32_t> handoff{0};
   };
 
   // Guard: the worker's LockGuard in a parallel round; NoGuard when one
@@ -388,6 +394,7 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
           [&](const tbb::blocked_range<std::size_t>& range) {
             (void)round_started_.load(std::memory_order_acquire);
             Worker& w = workers_[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
+            w.handoff.fetch_add(1, std::memory_order_acquire);
             const std::size_t lo = std::min(points.size(), range.begin() * per);
             const std::size_t hi = std::min(points.size(), range.end() * per);
             for (std::size_t j = lo; j < hi; ++j) {
@@ -403,6 +410,7 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
                 failed_.store(true, std::memory_order_relaxed);
               }
             }
+            w.handoff.fetch_add(1, std::memory_order_release);
             workers_done_.fetch_add(1, std::memory_order_release);
           },
           tbb::simple_partitioner());
