@@ -193,15 +193,18 @@ class IntegerGrid {
   SnapStats snap_all(std::vector<Point<D>>& pts) const {
     SnapStats st;
     st.points = pts.size();
-    std::vector<Point<D>> before = pts;
+    // The input, copied when the first point moves (the points before it are
+    // their own snaps): where none moves, none merges, and no copy is sorted.
+    std::vector<Point<D>> before;
     for (auto& p : pts) {
       const Point<D> s = snap(p);
       if (s != p) {
-        ++st.moved;
+        if (st.moved++ == 0) before = pts;
         st.max_displacement = std::max(st.max_displacement, displacement(p, s));
       }
       p = s;
     }
+    if (st.moved == 0) return st;
     std::vector<Point<D>> after = pts;
     st.merged = distinct(before) - distinct(after);
     return st;
