@@ -1,11 +1,13 @@
 // The exact validator (see validate.hpp for what is checked and why it suffices).
 // Facets, simplices, ridges and points are matched through open-addressing hash
 // tables of 32-bit ids whose keys are recomputed from the index arrays, so the
-// whole check is O(n + m) expected time and about 4 bytes per facet incidence.
+// whole check is O(n + m) expected time. Memory beside the input's simplices:
+// 4 bytes per facet incidence (the links) and the facet table's 8 bytes per
+// expected facet, 1.25 times over; the simplices are copied only when they
+// name a duplicated point.
 #include "algorithms/validate.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstring>
 #include <sstream>
 #include <utility>
@@ -23,6 +25,7 @@ using ExactKernel = filtered<FloatFilter, MpKernel>;
 static_assert(ExactKernel::exact);
 
 constexpr std::uint32_t kNone = 0xffffffffu;
+constexpr std::uint32_t kExtra = kNone - 1;  // a facet link that is neither a mate nor the boundary
 
 std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
   x ^= x >> 30;
@@ -34,21 +37,22 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
 
 // Open addressing with linear probing over 32-bit ids; the key of an id is
 // recomputed by the caller's equality test, which only runs when the stored
-// 32-bit hash tag matches. Capacity > 1.25 x the most ids that can be stored,
-// so a probe always reaches an empty slot.
+// 32-bit hash tag matches. The tag alone places an entry (its fraction of the
+// capacity, Lemire's multiply-shift), so the table grows without recomputing
+// keys: it doubles before it is 4/5 full, and a probe always reaches an empty
+// slot.
 class IdTable {
  public:
-  explicit IdTable(std::size_t max_entries)
-      : slots_(std::bit_ceil(max_entries + max_entries / 4 + 16), kEmpty), mask_(slots_.size() - 1) {}
+  explicit IdTable(std::size_t expected_entries) : slots_(expected_entries + expected_entries / 4 + 16, kEmpty) {}
   // The stored id whose key equals the new one, or kNone after storing `id`.
   template <class Eq>
   std::uint32_t find_or_insert(std::uint64_t hash, std::uint32_t id, Eq&& equal) {
-    const std::uint64_t h = mix(hash);
-    const std::uint64_t tag = h >> 32;
-    for (std::size_t i = h & mask_;; i = (i + 1) & mask_) {
+    const std::uint64_t tag = mix(hash) >> 32;
+    for (std::size_t i = home(tag);; i = i + 1 < slots_.size() ? i + 1 : 0) {
       const std::uint64_t s = slots_[i];
       if (s == kEmpty) {
         slots_[i] = tag << 32 | id;
+        if (++entries_ * 5 >= slots_.size() * 4) grow();
         return kNone;
       }
       if ((s >> 32) == tag && equal(static_cast<std::uint32_t>(s))) return static_cast<std::uint32_t>(s);
@@ -57,8 +61,21 @@ class IdTable {
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // id kNone never stored
+  std::size_t home(std::uint64_t tag) const {
+    return static_cast<std::size_t>((static_cast<unsigned __int128>(tag) * slots_.size()) >> 32);
+  }
+  void grow() {
+    std::vector<std::uint64_t> old(2 * slots_.size(), kEmpty);
+    old.swap(slots_);
+    for (const std::uint64_t s : old) {
+      if (s == kEmpty) continue;
+      std::size_t i = home(s >> 32);
+      while (slots_[i] != kEmpty) i = i + 1 < slots_.size() ? i + 1 : 0;
+      slots_[i] = s;
+    }
+  }
   std::vector<std::uint64_t> slots_;
-  std::size_t mask_;
+  std::size_t entries_ = 0;
 };
 
 template <std::size_t N>
@@ -273,9 +290,9 @@ class Validator {
     return c;
   }
 
-  // Indices in range; copies of duplicated points replaced by the first one.
+  // Indices in range; copies of duplicated points replaced by the first one
+  // (in a copy of the simplices, made only then).
   bool canonical_indices() {
-    v_.resize(in_.size());
     bool in_range = true;
     for (std::size_t i = 0; i < in_.size(); ++i) {
       const std::uint32_t x = in_[i];
@@ -284,9 +301,12 @@ class Validator {
         in_range = false;
         continue;
       }
-      if (first_[x] != x) flag(Check::duplicate_reference, static_cast<std::int64_t>(i / V), -1, x);
-      v_[i] = first_[x];
+      if (first_[x] == x) continue;
+      flag(Check::duplicate_reference, static_cast<std::int64_t>(i / V), -1, x);
+      if (canonical_copy_.empty()) canonical_copy_.assign(in_.begin(), in_.end());
+      canonical_copy_[i] = first_[x];
     }
+    v_ = canonical_copy_.empty() ? in_ : std::span<const std::uint32_t>(canonical_copy_);
     return in_range;
   }
 
@@ -320,11 +340,12 @@ class Validator {
     }
   }
 
-  // nb_[s*V+i]: the facet incidence on the other side of facet i of s, or kNone.
+  // nb_[s*V+i]: the facet incidence on the other side of facet i of s; kNone
+  // on the boundary; kExtra for a third simplex on a facet or a facet with a
+  // repeated vertex.
   void link_facets() {
     nb_.assign(m_ * V, kNone);
-    extra_.assign(m_ * V, 0);
-    IdTable table(m_ * V);
+    IdTable table(m_ * V / 2 + m_ / 16 + 16);  // V/2 facets per simplex, and the boundary's
     for (std::uint32_t s = 0; s < m_; ++s) {
       if (dup_[s]) continue;
       for (int i = 0; i < V; ++i) {
@@ -337,7 +358,7 @@ class Validator {
         });
         if (other == kNone) continue;
         if (nb_[other] != kNone || other / V == s) {  // third simplex, or a repeated vertex
-          extra_[inc] = 1;
+          nb_[inc] = kExtra;
           flag(Check::non_manifold_facet, s, i);
           continue;
         }
@@ -349,7 +370,7 @@ class Validator {
       }
     }
     for (std::size_t inc = 0; inc < m_ * V; ++inc) {
-      if (dup_[inc / V] || extra_[inc]) continue;
+      if (dup_[inc / V] || nb_[inc] == kExtra) continue;
       if (nb_[inc] == kNone)
         ++r_.boundary_facets;
       else if (nb_[inc] > inc)
@@ -357,7 +378,7 @@ class Validator {
     }
   }
 
-  bool is_boundary(std::size_t inc) const { return !dup_[inc / V] && !extra_[inc] && nb_[inc] == kNone; }
+  bool is_boundary(std::size_t inc) const { return !dup_[inc / V] && nb_[inc] == kNone; }
 
   // 2D: boundary edges, oriented with the triangle on their left, must form one
   // cycle that turns left (or goes straight on) at every vertex and turns once.
@@ -487,7 +508,7 @@ class Validator {
         stack.pop_back();
         for (int i = 0; i < V; ++i) {
           const std::uint32_t o = nb_[s * V + i];
-          if (o != kNone && !seen[o / V]) seen[o / V] = 1, stack.push_back(o / V);
+          if (o < kExtra && !seen[o / V]) seen[o / V] = 1, stack.push_back(o / V);
         }
       }
     }
@@ -544,7 +565,7 @@ class Validator {
   void delaunay() {
     for (std::size_t inc = 0; inc < m_ * V; ++inc) {
       const std::uint32_t o = nb_[inc];
-      if (o == kNone || o < inc || extra_[inc]) continue;
+      if (o >= kExtra || o < inc) continue;
       const std::size_t s = inc / V, t = o / V;
       if (!ok_[s] || !ok_[t]) continue;
       const Point<D>& far = p_[simplex(t)[o % V]];
@@ -562,8 +583,9 @@ class Validator {
   std::size_t m_ = 0;
   ValidationReport r_;
   std::vector<Offence>* offences_ = nullptr;
-  std::vector<std::uint32_t> first_, v_, nb_;
-  std::vector<std::uint8_t> ok_, dup_, extra_;
+  std::vector<std::uint32_t> first_, canonical_copy_, nb_;
+  std::span<const std::uint32_t> v_;  // the simplices, canonical: in_ or canonical_copy_
+  std::vector<std::uint8_t> ok_, dup_;
 };
 
 }  // namespace

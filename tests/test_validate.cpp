@@ -301,6 +301,29 @@ TEST_CASE("validate: broken 3D triangulations fail for the right reason", "[vali
   const auto r0 = dlab::validate(pts, t);
   REQUIRE(r0.delaunay());
 
+  // The facet table is sized for a closed triangulation (about two facets per
+  // tetrahedron) and grows past that: here in the middle of the list, between
+  // the two halves of t, whose shared facets must still find each other.
+  // Would catch: entries lost or misplaced when the table grows.
+  SECTION("a soup of disjoint tetrahedra between the two halves") {
+    auto q = p;
+    std::vector<std::uint32_t> b(t.begin(), t.begin() + 4 * (m / 2));
+    const std::size_t soup = 300;
+    for (std::size_t k = 0; k < soup; ++k) {
+      const auto first = static_cast<std::uint32_t>(q.size());
+      const double x = 10.0 + 3.0 * static_cast<double>(k);
+      q.insert(q.end(), {{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}, {x, 0, 1}});
+      b.insert(b.end(), {first, first + 1, first + 2, first + 3});
+    }
+    b.insert(b.end(), t.begin() + 4 * (m / 2), t.end());
+    const auto r = dlab::validate(std::span<const Point3>(q), b);
+    INFO(r.summary());
+    CHECK(r.interior_facets == r0.interior_facets);
+    CHECK(r.boundary_facets == r0.boundary_facets + 4 * soup);
+    CHECK(r[Check::non_manifold_facet].count == 0);
+    CHECK(r[Check::facet_same_side].count == 0);
+    CHECK(r[Check::disconnected].count > 0);
+  }
   SECTION("a reversed tetrahedron") {
     auto b = t;
     std::swap(b[4 * 3 + 2], b[4 * 3 + 3]);
