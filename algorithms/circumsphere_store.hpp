@@ -74,6 +74,7 @@ template <int D>
 class CircumsphereStore {
  public:
   void clear() { s_.clear(); }
+  void release() { std::vector<Circumsphere<D>>().swap(s_); }  // clear() and give the memory back
   void reserve(std::size_t n) { s_.reserve(n); }
   void set(std::uint32_t slot, const std::array<const Point<D>*, D + 1>& v) {
     if (slot >= s_.size()) s_.resize(std::size_t(slot) + 1);

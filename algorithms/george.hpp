@@ -140,10 +140,9 @@ class George {
   std::vector<BoundaryRecord<D>> records_;
   std::vector<std::uint32_t> rec_src_;  // cavity element of each record
   std::vector<std::uint32_t> vmark_;    // per vertex (ghost last): step 6 stamps
-  std::vector<std::uint32_t> reach_;    // per slot: step 3 stamps
-  std::uint32_t vstamp_ = 0, rstamp_ = 0;
+  std::uint32_t vstamp_ = 0;
   std::uint32_t last_ = 0;
-  std::uint32_t stamp_ = 0, base_ = 0, in_ = 0, out_ = 0, excl_ = 0;
+  std::uint32_t stamp_ = 0, base_ = 0, in_ = 0, out_ = 0, excl_ = 0, reached_ = 0;
   WalkRng rng_;
   std::string message_;
   // counters
@@ -228,28 +227,27 @@ bool George<K, D>::correct(std::uint32_t i, std::size_t nbase) {
       return false;
     }
     ++rounds_;
-    // (3) connectivity from the base.
-    if (reach_.size() < mesh_.slots()) reach_.resize(mesh_.slots(), 0);
-    if (++rstamp_ == 0) {
-      std::fill(reach_.begin(), reach_.end(), 0u);
-      rstamp_ = 1;
-    }
+    // (3) connectivity from the base (cavity_'s first nbase elements): the
+    // members reached from it are marked reached_ during the search, those
+    // left at in_ are excluded, and the reached ones are in_ again.
     queue_.assign(cavity_.begin(), cavity_.begin() + static_cast<std::ptrdiff_t>(nbase));
-    for (std::uint32_t b : queue_) reach_[b] = rstamp_;
     for (std::size_t q = 0; q < queue_.size(); ++q)
       for (int f = 0; f < V; ++f) {
         const std::uint32_t t = Mesh<D>::simplex_of(mesh_.neighbour(queue_[q], f));
-        if (member(t) && reach_[t] != rstamp_) {
-          reach_[t] = rstamp_;
+        if (mesh_.mark(t) == in_) {
+          mesh_.set_mark(t, reached_);
           queue_.push_back(t);
         }
       }
-    if (queue_.size() != cavity_.size()) {
+    const bool unreached = queue_.size() != cavity_.size();
+    if (unreached)
       for (std::uint32_t t : cavity_)
-        if (reach_[t] != rstamp_) {
+        if (mesh_.mark(t) == in_) {
           exclude(t);
           ++removed_connectivity_;
         }
+    for (std::size_t q = nbase; q < queue_.size(); ++q) mesh_.set_mark(queue_[q], in_);
+    if (unreached) {
       cavity_.erase(std::remove_if(cavity_.begin() + static_cast<std::ptrdiff_t>(nbase), cavity_.end(),
                                    [&](std::uint32_t t) { return !member(t); }),
                     cavity_.end());
@@ -365,11 +363,12 @@ bool George<K, D>::insert(std::uint32_t i) {
     for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
     stamp_ = 0;
   }
-  stamp_ += 4;
+  stamp_ += 5;
   base_ = stamp_;
   in_ = stamp_ + 1;
   out_ = stamp_ + 2;
   excl_ = stamp_ + 3;
+  reached_ = stamp_ + 4;  // step 3's search only
 
   // (1) the base.
   cavity_.clear();
@@ -497,7 +496,9 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   };
   cavity_sizes_.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (mesh() is then
-  // empty); the simplices of the enclosing box's corners are left out.
+  // empty); the simplices of the enclosing box's corners are left out. The
+  // spheres go first: the result is not to coexist with them.
+  spheres_.release();
   if (res.outcome == RunResult::Outcome::ok)
     res.simplices = mesh_.take_finite_simplices([&](const std::uint32_t* v) {
       const bool keep = std::all_of(v, v + V, [&](std::uint32_t id) { return id < n; });
