@@ -14,18 +14,23 @@
 namespace dlab::cli {
 namespace {
 
+// The predicate of N points in D dimensions: orient2d (3), incircle (4),
+// orient3d (4), insphere (5); no other point is ever indexed.
 template <int D, int N>
-int evaluate(const std::string& name, const std::string& kernel, const std::vector<double>& c) {
+int evaluate(const std::string& kernel, const std::vector<double>& c) {
   std::vector<Point<D>> pts(N);
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < D; ++j) pts[i][j] = c[static_cast<std::size_t>(i * D + j)];
   return with_kernel<D>(kernel, std::span<const Point<D>>(pts), [&](const auto& k) {
-    if constexpr (D == 2) {
-      return to_int(name == "orient2d" ? k.orient2d(pts[0], pts[1], pts[2])
-                                       : k.incircle(pts[0], pts[1], pts[2], pts[3]));
-    } else {
-      return to_int(name == "orient3d" ? k.orient3d(pts[0], pts[1], pts[2], pts[3])
-                                       : k.insphere(pts[0], pts[1], pts[2], pts[3], pts[4]));
+    if constexpr (D == 2 && N == 3)
+      return to_int(k.orient2d(pts[0], pts[1], pts[2]));
+    else if constexpr (D == 2 && N == 4)
+      return to_int(k.incircle(pts[0], pts[1], pts[2], pts[3]));
+    else if constexpr (D == 3 && N == 4)
+      return to_int(k.orient3d(pts[0], pts[1], pts[2], pts[3]));
+    else {
+      static_assert(D == 3 && N == 5);
+      return to_int(k.insphere(pts[0], pts[1], pts[2], pts[3], pts[4]));
     }
   });
 }
@@ -78,10 +83,10 @@ int cmd_predicate(int argc, char** argv) {
       c.push_back(p.value);
     }
     int s = 0;
-    if (name == "orient2d") s = evaluate<2, 3>(name, kernel, c);
-    else if (name == "incircle") s = evaluate<2, 4>(name, kernel, c);
-    else if (name == "orient3d") s = evaluate<3, 4>(name, kernel, c);
-    else s = evaluate<3, 5>(name, kernel, c);
+    if (name == "orient2d") s = evaluate<2, 3>(kernel, c);
+    else if (name == "incircle") s = evaluate<2, 4>(kernel, c);
+    else if (name == "orient3d") s = evaluate<3, 4>(kernel, c);
+    else s = evaluate<3, 5>(kernel, c);
     std::cout << s << "\n";
     return 0;
   } catch (const UsageError& e) {
