@@ -48,7 +48,7 @@ class IdTable {
   template <class Eq>
   std::uint32_t find_or_insert(std::uint64_t hash, std::uint32_t id, Eq&& equal) {
     const std::uint64_t tag = mix(hash) >> 32;
-    for (std::size_t i = home(tag);; i = i + 1 < slots_.size() ? i + 1 : 0) {
+    for (std::size_t i = home(tag);; i = next(i)) {
       const std::uint64_t s = slots_[i];
       if (s == kEmpty) {
         slots_[i] = tag << 32 | id;
@@ -64,13 +64,14 @@ class IdTable {
   std::size_t home(std::uint64_t tag) const {
     return static_cast<std::size_t>((static_cast<unsigned __int128>(tag) * slots_.size()) >> 32);
   }
+  std::size_t next(std::size_t i) const { return i + 1 < slots_.size() ? i + 1 : 0; }  // linear probing
   void grow() {
     std::vector<std::uint64_t> old(2 * slots_.size(), kEmpty);
     old.swap(slots_);
     for (const std::uint64_t s : old) {
       if (s == kEmpty) continue;
       std::size_t i = home(s >> 32);
-      while (slots_[i] != kEmpty) i = i + 1 < slots_.size() ? i + 1 : 0;
+      while (slots_[i] != kEmpty) i = next(i);
       slots_[i] = s;
     }
   }
