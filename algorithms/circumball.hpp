@@ -2,7 +2,8 @@
 // disc on their segment; 3D: three, the sphere on the triangle's
 // circumcircle), from enclosures of their scaled coordinates, for Tanemura's
 // pruning (algorithms/tanemura.hpp): the centre of the pencil of spheres
-// through a facet, and the trace of a sphere on a flat of points.
+// through a facet, and the trace of a sphere on a flat of points (through D
+// of its points, or from the sphere itself: hyperplane_trace).
 //
 // With u = q1 - q0 (2D: the centre is q0 + u / 2) and in 3D v = q2 - q0 and
 // n = u x v, the centre is q0 + ((|u|^2 v - |v|^2 u) x n) / (2 |n|^2), the
@@ -56,6 +57,34 @@ Circumball<D> circumball(const std::array<IvPoint<D>, D>& q, const IvPoint<D>& n
   Iv nn{0, 0};
   for (int i = 0; i < D; ++i) nn = nn + sq(n[i]);
   return circumball<D>(q, n, nn);
+}
+
+// The trace of a sphere on a hyperplane: with the sphere's centre in c and
+// its squared radius at most r2, and the hyperplane through `at` with a
+// normal in n (nn: an enclosure of |n|^2), a point x of the hyperplane is
+// inside the sphere iff |x - c'|^2 <= r2 - d^2, where c' = c - (s / |n|^2) n
+// is c's projection and d^2 = s^2 / |n|^2 its squared distance, s = (c -
+// at).n (Pythagoras, as x - c' is orthogonal to n). In interval arithmetic,
+// so the result encloses c' and bounds the squared radius above (r2 below 0:
+// the sphere misses the hyperplane). Far from the sphere's scale (R^2 much
+// larger than the trace's) the subtraction keeps R^2's rounding, about
+// 2^-51 R^2: callers compare the result with R^2 to see whether it is worth
+// using.
+template <int D>
+struct Trace {
+  std::array<Iv, D> centre;
+  Iv r2;  // upper end: a bound of the trace's squared radius (unbounded: NaN or infinite)
+};
+
+template <int D>
+Trace<D> hyperplane_trace(const IvPoint<D>& c, double r2, const IvPoint<D>& at, const IvPoint<D>& n, Iv nn) {
+  Iv s{0, 0};
+  for (int i = 0; i < D; ++i) s = s + (c[i] - at[i]) * n[i];
+  const Iv k = s / nn;
+  Trace<D> t;
+  for (int i = 0; i < D; ++i) t.centre[i] = c[i] - k * n[i];
+  t.r2 = Iv::exact(r2) - sq(s) / nn;
+  return t;
 }
 
 }  // namespace dlab

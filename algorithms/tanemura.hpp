@@ -165,7 +165,12 @@ class Tanemura {
   // hyperplane h of a flat node's points (algorithms/exact_flats.hpp),
   // decided once per hyperplane and search (flat_seen_, flat_mask_). If all
   // do, f lies in h and none of the node's points is a candidate.
-  std::uint32_t flat_mask(const Facet& f, std::uint32_t h);
+  // The kept answer inline (most calls), the deciding out of line: a call
+  // to the whole saved and restored a dozen registers for a two-load answer.
+  std::uint32_t flat_mask(const Facet& f, std::uint32_t h) {
+    return flat_seen_[h] == stamp_ ? flat_mask_[h] : decide_flat_mask(f, h);
+  }
+  [[gnu::noinline]] std::uint32_t decide_flat_mask(const Facet& f, std::uint32_t h);
   static constexpr std::uint32_t kAllVertices = (1u << D) - 1;
   // Whether point id lies in flat h (exact orientation zero). The points
   // outside flat nodes (beside a line or plane, or on it in a node with a
@@ -206,15 +211,31 @@ class Tanemura {
   // are huge and almost tangent to it, prune the flat's nodes with the axis
   // box test. Else an unbounded Ball. Once per hyperplane and ball
   // (flat_ball_at_).
-  [[gnu::flatten]] const Ball& flat_ball(const Facet& f, std::uint32_t h, std::uint32_t mask);
+  //
+  // While the ball is fresh (it is, in the climbs), its own trace is used
+  // instead (trace_of_ball): a sphere S of the pencil through f passes
+  // through f's vertices in h and, on the open side, holds best_'s sphere's
+  // points, so a point of h on the open side inside best_'s sphere is inside
+  // S's trace (algorithms/circumball.hpp, hyperplane_trace): a dozen
+  // interval operations against the circumcentre's forty. The kept answer
+  // inline, as flat_mask's.
+  const Ball& flat_ball(const Facet& f, std::uint32_t h, std::uint32_t mask) {
+    return flat_ball_at_[h] == projection_stamp_ ? flat_balls_[h] : compute_flat_ball(f, h, mask);
+  }
+  [[gnu::noinline, gnu::flatten]] const Ball& compute_flat_ball(const Facet& f, std::uint32_t h,
+                                                                std::uint32_t mask);
+  // The trace of ball_ on flat h into t; false where it is unbounded or
+  // R^2 - d^2 cancels to below 2^-36 R^2 (its rounding then dominates).
+  bool trace_of_ball(std::uint32_t h, Ball& t) const;
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
   [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
-  bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  [[gnu::noinline]] bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   // The same answer, cheaper: the corner of each axis from the normal's sign
   // (set_outer_corners, once per search); box_may_be_outer decides any prune.
-  bool box_may_be_outer_fast(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  // Inline: its call cost a fifth of its instructions.
+  [[gnu::always_inline]] bool box_may_be_outer_fast(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   void set_outer_corners();
   static bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                                 const Ball& ball) {
@@ -278,6 +299,13 @@ class Tanemura {
   std::vector<std::uint32_t> flat_seen_, flat_ball_at_, on_flat_, off_flat_;
   std::vector<std::uint8_t> flat_mask_;
   std::vector<Ball> flat_balls_;
+  // Each flat's hyperplane, scaled: a point on it (refs()[0]) and a normal
+  // (enclosures), for trace_of_ball.
+  struct FlatPlane {
+    std::array<Iv, D> at, normal;
+    Iv nn;  // |normal|^2
+  };
+  std::vector<FlatPlane> flat_planes_;
   std::vector<std::uint32_t> out_;
   std::string message_;
   bool keep_closed_ = !K::exact;
@@ -432,7 +460,7 @@ void Tanemura<K, D>::set_outer_corners() {
 }
 
 template <class K, int D>
-bool Tanemura<K, D>::box_may_be_outer_fast(const std::array<double, D>& lo,
+inline bool Tanemura<K, D>::box_may_be_outer_fast(const std::array<double, D>& lo,
                                            const std::array<double, D>& hi) const {
   // With nrm_i >= 0 (both ends), n (x_i - f0_i) is largest at x_i = hi_i,
   // f0_i = f0_i.lo for either end n of nrm_i, and rounding is monotone: the
@@ -562,19 +590,22 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   ++nodes_visited_;
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
-  if (!box_may_be_outer_fast(n.lo, n.hi)) return;
   // Flat oblique points (fans off a line or plane): their oriented box, in
   // the climbs (the first leaves are scanned anyway); the outer side there
   // only while there is no ball (a hull facet's climb).
   const NodeFrame<D>* fr = W == Walk::first_leaves ? nullptr : tree_.frame(k);
+  // The flat tests come before the outer-side test: they prune most flat
+  // nodes, from answers kept for the search (flat_mask) or the ball
+  // (flat_ball), and the outer-side test cost as much as they do.
   if constexpr (K::exact)
     if (tree_.framed(k))
       if (const std::uint32_t h = flats_.of_node(k); h != ExactFlats<D>::kNone) {
-        // The flat part pruned: only the exceptions remain. A first leaf
-        // with exceptions is scanned whole (see scan_exceptions).
+        // The flat part pruned: only the exceptions remain, where the box
+        // may hold an outer point. A first leaf with exceptions is scanned
+        // whole (see scan_exceptions).
         const typename ExactFlats<D>::Part* part = flats_.part(k);
         const auto flat_part_pruned = [&] {
-          if (part) scan_exceptions(f, *part);
+          if (part && box_may_be_outer_fast(n.lo, n.hi)) scan_exceptions(f, *part);
         };
         if (W != Walk::first_leaves || !part) {
           if (const std::uint32_t mask = flat_mask(f, h); mask == kAllVertices) {
@@ -597,6 +628,7 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
           }
         }
       }
+  if (!box_may_be_outer_fast(n.lo, n.hi)) return;
   if (fr) {
     const Projections& p = projections(*fr);
     if (!(ball_valid_ && ball_.bounded)) {
@@ -661,8 +693,7 @@ bool Tanemura<K, D>::on_flat(std::uint32_t h, std::uint32_t id) {
 }
 
 template <class K, int D>
-std::uint32_t Tanemura<K, D>::flat_mask(const Facet& f, std::uint32_t h) {
-  if (flat_seen_[h] == stamp_) return flat_mask_[h];
+std::uint32_t Tanemura<K, D>::decide_flat_mask(const Facet& f, std::uint32_t h) {
   std::uint32_t mask = 0;
   for (int j = 0; j < D; ++j)
     if (on_flat(h, f[j])) mask |= 1u << j;
@@ -672,11 +703,11 @@ std::uint32_t Tanemura<K, D>::flat_mask(const Facet& f, std::uint32_t h) {
 }
 
 template <class K, int D>
-const typename Tanemura<K, D>::Ball& Tanemura<K, D>::flat_ball(const Facet& f, std::uint32_t h,
-                                                              std::uint32_t mask) {
+const typename Tanemura<K, D>::Ball& Tanemura<K, D>::compute_flat_ball(const Facet& f, std::uint32_t h,
+                                                                      std::uint32_t mask) {
   Ball& b = flat_balls_[h];
-  if (flat_ball_at_[h] == projection_stamp_) return b;
   flat_ball_at_[h] = projection_stamp_;
+  if (ball_valid_ && !ball_stale_ && ball_.bounded && trace_of_ball(h, b)) return b;
   b.bounded = false;
   if (!on_flat(h, best_)) return b;
   std::array<std::array<Iv, D>, D> q;
@@ -700,6 +731,21 @@ const typename Tanemura<K, D>::Ball& Tanemura<K, D>::flat_ball(const Facet& f, s
   b.r2_prune = prune_r2(b.r2);
   b.bounded = true;
   return b;
+}
+
+template <class K, int D>
+bool Tanemura<K, D>::trace_of_ball(std::uint32_t h, Ball& t) const {
+  const FlatPlane& pl = flat_planes_[h];
+  const Trace<D> tr = hyperplane_trace<D>(ball_.centre, ball_.r2, pl.at, pl.normal, pl.nn);
+  t.bounded = false;
+  for (int i = 0; i < D; ++i)
+    if (!tr.centre[i].bounded()) return false;
+  if (!tr.r2.bounded() || !(tr.r2.hi >= 0x1p-36 * ball_.r2)) return false;
+  t.centre = tr.centre;
+  t.r2 = tr.r2.hi;
+  t.r2_prune = prune_r2(t.r2);
+  t.huge = false;
+  return t.bounded = true;
 }
 
 template <class K, int D>
@@ -823,6 +869,18 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   }
   std::array<std::uint32_t, D> at = first_leaves_;
   int climbs = D;
+  // A fan off a flat (D - 1 vertices in a flat node, the apex off it) finds
+  // its apex beside the flat vertices: the climb from the vertex off the
+  // flat only tested the siblings on its way, one by one, where one climb's
+  // coarser siblings are pruned whole (any one climb visits or prunes every
+  // node).
+  if constexpr (K::exact)
+    if (flats_.count() > 0) {
+      int on = 0;
+      for (int j = 0; j < D; ++j)
+        if (flats_.of_point(f[j]) != ExactFlats<D>::kNone) at[on++] = first_leaves_[j];
+      if (on > 0) climbs = on;
+    }
   for (;;) {
     for (int j = climbs - 1; j >= 0; --j) {
       bool ends = at[j] == KdTree<D>::root();
@@ -925,6 +983,22 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     flat_mask_.assign(flats_.count(), 0);
     flat_ball_at_.assign(flats_.count(), 0u);
     flat_balls_.assign(flats_.count(), Ball{});
+    flat_planes_.resize(flats_.count());
+    for (std::uint32_t h = 0; h < flats_.count(); ++h) {
+      FlatPlane& pl = flat_planes_[h];
+      const std::array<std::uint32_t, D>& r = flats_.refs(h);
+      pl.at = scaled(r[0]);
+      std::array<Iv, D> u, v;
+      for (int i = 0; i < D; ++i) u[i] = scaled(r[1])[i] - pl.at[i];
+      if constexpr (D == 2) {
+        pl.normal = {Iv{0, 0} - u[1], u[0]};
+      } else {
+        for (int i = 0; i < D; ++i) v[i] = scaled(r[2])[i] - pl.at[i];
+        pl.normal = cross(u, v);
+      }
+      pl.nn = Iv{0, 0};
+      for (int i = 0; i < D; ++i) pl.nn = pl.nn + sq(pl.normal[i]);
+    }
     // Per point, only where there are flats (12 bytes a point of uniform input otherwise).
     on_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
     off_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
@@ -989,7 +1063,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       hull_planes_.capacity() * sizeof(HullPlane) + plane_of_.capacity() * 4 + flats_.bytes() +
       projections_.capacity() * sizeof(Projections) + projected_at_.capacity() * 8 +
       flat_seen_.capacity() * 4 + flat_mask_.capacity() + flat_ball_at_.capacity() * 4 + (on_flat_.capacity() + off_flat_.capacity()) * 4 +
-      flat_balls_.capacity() * sizeof(Ball);
+      flat_balls_.capacity() * sizeof(Ball) + flat_planes_.capacity() * sizeof(FlatPlane);
   if (!ok) {
     res.outcome = RunResult::Outcome::failed;
     res.message = message_;

@@ -7,11 +7,15 @@
 // algorithms/box_ball.hpp: with those enclosures and prune_r2's slack, a
 // point exactly on the sphere is never pruned (the fourth corner of a
 // rectangle in an oblique plane; in 2D the segment's own ends).
+// hyperplane_trace: the trace of a sphere on a line or plane encloses the
+// exact projection of its centre and bounds R^2 - d^2, for spheres up to
+// 2^45 times their distance to it, and keeps a point on both.
 #include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck.h>
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -208,5 +212,152 @@ TEST_CASE("box_ball: a point exactly on the smallest sphere is kept", "[circumba
     std::array<Iv, 2> centre;
     for (int i = 0; i < 2; ++i) centre[i] = qi[0][i] + cb.offset[i];
     for (int j = 0; j < 2; ++j) RC_ASSERT(box_may_meet_ball<2>(q[j], q[j], centre, prune_r2(cb.r2.hi)));
+  });
+}
+
+namespace {
+
+// The nearest doubles below and above v: an enclosure of a rational.
+Iv outward(const Q& v) {
+  double lo = v.convert_to<double>(), hi = lo;
+  while (Q(lo) > v) lo = std::nextafter(lo, -1e308);
+  while (Q(hi) < v) hi = std::nextafter(hi, 1e308);
+  return {lo, hi};
+}
+
+template <int D>
+Q dot(const std::array<Q, D>& a, const std::array<Q, D>& b) {
+  Q s = 0;
+  for (int i = 0; i < D; ++i) s += a[i] * b[i];
+  return s;
+}
+
+// hyperplane_trace of the sphere (c, r2) on the hyperplane through `at`
+// with normal n, both given exactly; checked against the exact projection
+// and Q(r2) - d^2. False where unbounded.
+template <int D>
+bool check_trace(const std::array<double, D>& c, double r2, const std::array<double, D>& at,
+                 const std::array<Q, D>& n_exact, const IvPoint<D>& n) {
+  IvPoint<D> ci, ai;
+  for (int i = 0; i < D; ++i) ci[i] = Iv::exact(c[i]), ai[i] = Iv::exact(at[i]);
+  Iv nn{0, 0};
+  for (int i = 0; i < D; ++i) nn = nn + sq(n[i]);
+  const Trace<D> t = hyperplane_trace<D>(ci, r2, ai, n, nn);
+  std::array<Q, D> rel;
+  for (int i = 0; i < D; ++i) rel[i] = Q(c[i]) - Q(at[i]);
+  const Q k = dot<D>(rel, n_exact) / dot<D>(n_exact, n_exact);
+  for (int i = 0; i < D; ++i)
+    if (!t.centre[i].bounded()) return false;
+  if (!t.r2.bounded()) return false;
+  for (int i = 0; i < D; ++i) RC_ASSERT(encloses(t.centre[i], Q(c[i]) - k * n_exact[i]));
+  RC_ASSERT(Q(t.r2.hi) >= Q(r2) - k * k * dot<D>(n_exact, n_exact));
+  return true;
+}
+
+// The exact circumcentre of four points in space (Cramer's rule on
+// 2 (qj - q0) . (c - q0) = |qj - q0|^2).
+std::array<Q, 3> exact_circumcentre(const std::array<std::array<Q, 3>, 4>& q) {
+  std::array<std::array<Q, 3>, 3> a;
+  std::array<Q, 3> rhs;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) a[j][i] = 2 * (q[j + 1][i] - q[0][i]);
+    rhs[j] = 0;
+    for (int i = 0; i < 3; ++i) rhs[j] += (q[j + 1][i] - q[0][i]) * (q[j + 1][i] - q[0][i]);
+  }
+  const auto det3 = [](const std::array<std::array<Q, 3>, 3>& m) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  const Q d = det3(a);
+  std::array<Q, 3> c;
+  for (int k = 0; k < 3; ++k) {
+    auto m = a;
+    for (int r = 0; r < 3; ++r) m[r][k] = rhs[r];
+    c[k] = q[0][k] + det3(m) / d;
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("hyperplane_trace: encloses the exact trace (rational)", "[circumball]") {
+  // Spheres from 2^-10 to 2^45 times their distance to the hyperplane
+  // (squared), so that R^2 - d^2 runs from about R^2 down to where it
+  // cancels to R^2's rounding, at every scale.
+  rc::prop("3D: oblique planes through three points", [] {
+    const int e = *rc::gen::inRange(-150, 150);
+    std::array<std::array<double, 3>, 3> q;
+    for (auto& p : q)
+      for (double& x : p) x = coordinate(e - 8, e);
+    RC_PRE(!collinear(q));
+    std::array<Q, 3> u, v;
+    IvPoint<3> ui, vi;
+    for (int i = 0; i < 3; ++i) {
+      u[i] = Q(q[1][i]) - Q(q[0][i]), v[i] = Q(q[2][i]) - Q(q[0][i]);
+      ui[i] = Iv::exact(q[1][i]) - Iv::exact(q[0][i]), vi[i] = Iv::exact(q[2][i]) - Iv::exact(q[0][i]);
+    }
+    const std::array<Q, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    std::array<double, 3> c;
+    for (double& x : c) x = coordinate(e - 8, e);
+    std::array<Q, 3> rel;
+    for (int i = 0; i < 3; ++i) rel[i] = Q(c[i]) - Q(q[0][i]);
+    const Q d2 = dot<3>(rel, n) * dot<3>(rel, n) / dot<3>(n, n);
+    const double r2 = d2.convert_to<double>() * (1 + std::ldexp(1.0, -*rc::gen::inRange(-10, 46)));
+    RC_ASSERT(check_trace<3>(c, r2, q[0], n, cross(ui, vi)));
+  });
+  rc::prop("2D: lines through two points", [] {
+    const int e = *rc::gen::inRange(-200, 200);
+    std::array<double, 2> a, b, c;
+    for (double& x : a) x = coordinate(e - 8, e);
+    for (double& x : b) x = coordinate(e - 8, e);
+    for (double& x : c) x = coordinate(e - 8, e);
+    RC_PRE(a != b);
+    const std::array<Q, 2> n{Q(a[1]) - Q(b[1]), Q(b[0]) - Q(a[0])};
+    const IvPoint<2> ni{Iv::exact(a[1]) - Iv::exact(b[1]), Iv::exact(b[0]) - Iv::exact(a[0])};
+    const std::array<Q, 2> rel{Q(c[0]) - Q(a[0]), Q(c[1]) - Q(a[1])};
+    const Q d2 = dot<2>(rel, n) * dot<2>(rel, n) / dot<2>(n, n);
+    const double r2 = d2.convert_to<double>() * (1 + std::ldexp(1.0, -*rc::gen::inRange(-10, 46)));
+    RC_ASSERT(check_trace<2>(c, r2, a, n, ni));
+  });
+}
+
+TEST_CASE("hyperplane_trace: a point on the sphere and the plane is kept", "[circumball]") {
+  // The rectangle p, p + a, p + b, p + a + b (a . b = 0) in an oblique plane
+  // and a point o off it at a height from 2^-20 to 2^10 of the rectangle's
+  // size: the sphere through p, p + a, p + b and o passes through p + a + b,
+  // which its trace must keep. The centre is enclosed by the nearest doubles
+  // around the exact one, the squared radius bounded above the same way.
+  rc::prop("3D", [] {
+    const int e = *rc::gen::inRange(-150, 150);
+    const auto k = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
+    const auto l = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
+    std::array<double, 3> p;
+    for (double& x : p) x = static_cast<double>(*rc::gen::inRange(-(1 << 24), 1 << 24));
+    const std::array<double, 3> a{k, 2 * k, 2 * k}, b{2 * l, l, -2 * l}, nrm{-6, 6, -3};  // a x b / (k l)
+    const double h = std::ldexp(std::max(k, l), -*rc::gen::inRange(-10, 21)) / 9;
+    std::array<std::array<Q, 3>, 4> q;  // p, p + a, p + b, o
+    std::array<double, 3> corner, at;
+    IvPoint<3> n;
+    for (int i = 0; i < 3; ++i) {
+      q[0][i] = Q(std::ldexp(p[i], e));
+      q[1][i] = Q(std::ldexp(p[i] + a[i], e));
+      q[2][i] = Q(std::ldexp(p[i] + b[i], e));
+      q[3][i] = Q(std::ldexp(p[i], e)) + Q(std::ldexp(h, e)) * nrm[i];
+      corner[i] = std::ldexp(p[i] + a[i] + b[i], e);
+      at[i] = std::ldexp(p[i], e);
+      n[i] = Iv::exact(nrm[i]);
+    }
+    const std::array<Q, 3> c = exact_circumcentre(q);
+    IvPoint<3> ci;
+    Q r2 = 0;
+    for (int i = 0; i < 3; ++i) {
+      ci[i] = outward(c[i]);
+      r2 += (c[i] - q[0][i]) * (c[i] - q[0][i]);
+    }
+    const Trace<3> t = hyperplane_trace<3>(ci, outward(r2).hi, IvPoint<3>{Iv::exact(at[0]), Iv::exact(at[1]),
+                                                                          Iv::exact(at[2])},
+                                           n, Iv::exact(81));
+    RC_ASSERT(t.r2.bounded());
+    RC_ASSERT(box_may_meet_ball<3>(corner, corner, t.centre, prune_r2(t.r2.hi)));
   });
 }

@@ -168,10 +168,11 @@ TEST_CASE("exact flats: facets in the plane skip its nodes, same triangulation",
 TEST_CASE("exact flats: fans off a line or plane prune by the ball's trace, same triangulation", "[exact_flats]") {
   // 2D collinear n = 16384: nodes visited per facet 40.0 before the trace
   // and with it, 33.1 once nodes holding the points off the line were flat
-  // but for those (ExactFlats exceptions).
+  // but for those (ExactFlats exceptions), 17.5 since a fan's facet climbs
+  // only from its vertices on the line (search).
   {
     const Counters c = same_as_bowyer_watson<2>(gen::collinear<2>(16384, 3, 1), "adaptive");
-    CHECK(test::counter(c, "nodes_visited") < 36 * test::counter(c, "facets_searched"));
+    CHECK(test::counter(c, "nodes_visited") < 20 * test::counter(c, "facets_searched"));
   }
   // 3D collinear n = 20000: the trace on the plane through the line and a
   // point beside it is not far smaller than the sphere, whose frame tests
