@@ -926,7 +926,7 @@ bool Tanemura<K, D>::add_simplex(const Facet& f, std::uint32_t p) {
       message_ = "a facet was met by a third simplex (inconsistent predicates)";
       return false;
     }
-    if (Table::same_orientation(slot.oriented, g)) {
+    if (slot.odd == Table::odd(g)) {  // same orientation (see FacetTable)
       message_ = "two simplices on the same side of a facet (inconsistent predicates)";
       return false;
     }
