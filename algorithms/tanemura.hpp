@@ -908,13 +908,20 @@ bool Tanemura<K, D>::add_simplex(const Facet& f, std::uint32_t p) {
   }
   out_.insert(out_.end(), s.begin(), s.end());
   // Facets opposite j < D contain p; oriented outwards (see the header).
+  // Their slots are fetched together, then probed.
+  std::array<Facet, D> gs, keys;
   for (int j = 0; j < D; ++j) {
-    Facet g;
+    Facet& g = gs[j];
     int n = 0;
     for (int i = 0; i < V; ++i)
       if (i != j) g[n++] = s[i];
     if ((D - j) % 2 == 0) std::swap(g[0], g[1]);
-    const Facet key = Table::sorted(g);
+    keys[j] = Table::sorted(g);
+    table_.prefetch(keys[j]);
+  }
+  for (int j = 0; j < D; ++j) {
+    const Facet& g = gs[j];
+    const Facet& key = keys[j];
     const std::size_t at = table_.find(key);
     if (at == Table::npos) {
       table_.insert(key, g, Table::State::open);
@@ -1028,6 +1035,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head));
       head = 0;
     }
+    if (head < queue_.size()) table_.prefetch(Table::sorted(queue_[head].f));  // the next one's slot, during this search
     const std::size_t at = table_.find(Table::sorted(f));
     if (at == Table::npos || table_.at(at).state != Table::State::open) continue;  // closed since
     const std::uint64_t examined_before = examined_;
