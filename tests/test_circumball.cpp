@@ -120,6 +120,32 @@ std::array<std::array<double, D>, D> points_near_binade(int lo, int hi) {
   return q;
 }
 
+// Rectangles p, p + a, p + b, p + a + b with a . b = 0 are cocircular:
+// a = (1, 2, 2) k, b = (2, 1, -2) l (a x b = (-6, 6, -3) k l), p and k, l
+// random integers, the corners scaled by 2^e, e in [lo, hi] (exact: the
+// integers are below 2^53).
+struct Rectangle {
+  std::array<std::array<double, 3>, 4> q;  // p, p + a, p + b, p + a + b
+  double side;                             // max(k, l) 2^e
+};
+Rectangle random_rectangle(int lo, int hi) {
+  const int e = *rc::gen::inRange(lo, hi);
+  const auto k = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
+  const auto l = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
+  std::array<double, 3> p;
+  for (double& x : p) x = static_cast<double>(*rc::gen::inRange(-(1 << 24), 1 << 24));
+  const std::array<double, 3> a{k, 2 * k, 2 * k}, b{2 * l, l, -2 * l};
+  Rectangle r;
+  for (int i = 0; i < 3; ++i) {
+    r.q[0][i] = std::ldexp(p[i], e);
+    r.q[1][i] = std::ldexp(p[i] + a[i], e);
+    r.q[2][i] = std::ldexp(p[i] + b[i], e);
+    r.q[3][i] = std::ldexp(p[i] + a[i] + b[i], e);
+  }
+  r.side = std::ldexp(std::max(k, l), e);
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("circumball: enclosures contain the exact centre and radius (rational)", "[circumball]") {
@@ -171,22 +197,8 @@ TEST_CASE("circumball: a right triangle's centre is its hypotenuse's midpoint, t
 }
 
 TEST_CASE("box_ball: a point exactly on the smallest sphere is kept", "[circumball]") {
-  // Rectangles p, p + a, p + b, p + a + b with a . b = 0 are cocircular:
-  // a = (1, 2, 2) k, b = (2, 1, -2) l in 3D, at random binades and offsets.
-  rc::prop("3D: the fourth corner of a rectangle", [] {
-    const int e = *rc::gen::inRange(-200, 160);
-    const auto k = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
-    const auto l = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
-    std::array<double, 3> p;
-    for (double& x : p) x = static_cast<double>(*rc::gen::inRange(-(1 << 24), 1 << 24));
-    const std::array<double, 3> a{k, 2 * k, 2 * k}, b{2 * l, l, -2 * l};
-    std::array<std::array<double, 3>, 4> q;  // p, p + a, p + b, p + a + b: exact (< 2^53)
-    for (int i = 0; i < 3; ++i) {
-      q[0][i] = std::ldexp(p[i], e);
-      q[1][i] = std::ldexp(p[i] + a[i], e);
-      q[2][i] = std::ldexp(p[i] + b[i], e);
-      q[3][i] = std::ldexp(p[i] + a[i] + b[i], e);
-    }
+  rc::prop("3D: the fourth corner of a rectangle (cocircular)", [] {
+    const auto q = random_rectangle(-200, 160).q;
     const int corner = *rc::gen::inRange(0, 4);  // any corner may be the one tested
     std::array<IvPoint<3>, 3> qi;
     for (int j = 0, m = 0; j < 4; ++j)
@@ -328,23 +340,15 @@ TEST_CASE("hyperplane_trace: a point on the sphere and the plane is kept", "[cir
   // which its trace must keep. The centre is enclosed by the nearest doubles
   // around the exact one, the squared radius bounded above the same way.
   rc::prop("3D", [] {
-    const int e = *rc::gen::inRange(-150, 150);
-    const auto k = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
-    const auto l = static_cast<double>(*rc::gen::inRange(1, 1 << 20));
-    std::array<double, 3> p;
-    for (double& x : p) x = static_cast<double>(*rc::gen::inRange(-(1 << 24), 1 << 24));
-    const std::array<double, 3> a{k, 2 * k, 2 * k}, b{2 * l, l, -2 * l}, nrm{-6, 6, -3};  // a x b / (k l)
-    const double h = std::ldexp(std::max(k, l), -*rc::gen::inRange(-10, 21)) / 9;
+    const Rectangle r = random_rectangle(-150, 150);
+    const std::array<double, 3> nrm{-6, 6, -3};  // |nrm| = 9
+    const double h = std::ldexp(r.side, -*rc::gen::inRange(-10, 21)) / 9;
     std::array<std::array<Q, 3>, 4> q;  // p, p + a, p + b, o
-    std::array<double, 3> corner, at;
-    IvPoint<3> n;
+    IvPoint<3> n, at;
     for (int i = 0; i < 3; ++i) {
-      q[0][i] = Q(std::ldexp(p[i], e));
-      q[1][i] = Q(std::ldexp(p[i] + a[i], e));
-      q[2][i] = Q(std::ldexp(p[i] + b[i], e));
-      q[3][i] = Q(std::ldexp(p[i], e)) + Q(std::ldexp(h, e)) * nrm[i];
-      corner[i] = std::ldexp(p[i] + a[i] + b[i], e);
-      at[i] = std::ldexp(p[i], e);
+      for (int j = 0; j < 3; ++j) q[j][i] = Q(r.q[j][i]);
+      q[3][i] = Q(r.q[0][i]) + Q(h) * nrm[i];
+      at[i] = Iv::exact(r.q[0][i]);
       n[i] = Iv::exact(nrm[i]);
     }
     const std::array<Q, 3> c = exact_circumcentre(q);
@@ -354,10 +358,8 @@ TEST_CASE("hyperplane_trace: a point on the sphere and the plane is kept", "[cir
       ci[i] = outward(c[i]);
       r2 += (c[i] - q[0][i]) * (c[i] - q[0][i]);
     }
-    const Trace<3> t = hyperplane_trace<3>(ci, outward(r2).hi, IvPoint<3>{Iv::exact(at[0]), Iv::exact(at[1]),
-                                                                          Iv::exact(at[2])},
-                                           n, Iv::exact(81));
+    const Trace<3> t = hyperplane_trace<3>(ci, outward(r2).hi, at, n, Iv::exact(81));
     RC_ASSERT(t.r2.bounded());
-    RC_ASSERT(box_may_meet_ball<3>(corner, corner, t.centre, prune_r2(t.r2.hi)));
+    RC_ASSERT(box_may_meet_ball<3>(r.q[3], r.q[3], t.centre, prune_r2(t.r2.hi)));
   });
 }
