@@ -33,6 +33,22 @@ bool encloses(const Iv& x, const Q& v) {
   return x.bounded() && Q(x.lo) <= v && v <= Q(x.hi);
 }
 
+// The solution x of a x = rhs (Cramer's rule; a regular).
+std::array<Q, 3> cramer3(const std::array<std::array<Q, 3>, 3>& a, const std::array<Q, 3>& rhs) {
+  const auto det3 = [](const std::array<std::array<Q, 3>, 3>& m) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  const Q d = det3(a);
+  std::array<Q, 3> x;
+  for (int k = 0; k < 3; ++k) {
+    auto m = a;
+    for (int r = 0; r < 3; ++r) m[r][k] = rhs[r];
+    x[k] = det3(m) / d;
+  }
+  return x;
+}
+
 // The exact centre c of the smallest sphere through q (rational), from
 // (c - q0).(qj - q0) = |qj - q0|^2 / 2 for j >= 1 and, in 3D, (c - q0).n = 0.
 template <int D>
@@ -55,18 +71,8 @@ std::array<Q, D> exact_centre(const std::array<std::array<double, D>, D>& q) {
     const auto& v = a[1];
     a[2] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     rhs[2] = 0;
-    const auto det3 = [](const std::array<std::array<Q, 3>, 3>& m) {
-      return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    };
-    const Q d = det3(a);
-    std::array<Q, 3> c;
-    for (int k = 0; k < 3; ++k) {
-      auto m = a;
-      for (int r = 0; r < 3; ++r) m[r][k] = rhs[r];
-      c[k] = Q(q[0][k]) + det3(m) / d;
-    }
-    return c;
+    const std::array<Q, 3> x = cramer3(a, rhs);
+    return {Q(q[0][0]) + x[0], Q(q[0][1]) + x[1], Q(q[0][2]) + x[2]};
   }
 }
 
@@ -276,18 +282,8 @@ std::array<Q, 3> exact_circumcentre(const std::array<std::array<Q, 3>, 4>& q) {
     rhs[j] = 0;
     for (int i = 0; i < 3; ++i) rhs[j] += (q[j + 1][i] - q[0][i]) * (q[j + 1][i] - q[0][i]);
   }
-  const auto det3 = [](const std::array<std::array<Q, 3>, 3>& m) {
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  };
-  const Q d = det3(a);
-  std::array<Q, 3> c;
-  for (int k = 0; k < 3; ++k) {
-    auto m = a;
-    for (int r = 0; r < 3; ++r) m[r][k] = rhs[r];
-    c[k] = q[0][k] + det3(m) / d;
-  }
-  return c;
+  const std::array<Q, 3> x = cramer3(a, rhs);
+  return {q[0][0] + x[0], q[0][1] + x[1], q[0][2] + x[2]};
 }
 
 }  // namespace
