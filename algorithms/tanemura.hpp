@@ -235,7 +235,8 @@ class Tanemura {
   // The same answer, cheaper: the corner of each axis from the normal's sign
   // (set_outer_corners, once per search); box_may_be_outer decides any prune.
   // Inline: its call cost a fifth of its instructions.
-  [[gnu::always_inline]] bool box_may_be_outer_fast(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
+  [[gnu::always_inline]] bool box_may_be_outer_fast(const std::array<double, D>& lo,
+                                                    const std::array<double, D>& hi) const;
   void set_outer_corners();
   static bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                                 const Ball& ball) {
@@ -306,6 +307,7 @@ class Tanemura {
     Iv nn;  // |normal|^2
   };
   std::vector<FlatPlane> flat_planes_;
+  FlatPlane flat_plane(const std::array<std::uint32_t, D>& refs) const;  // through D points
   std::vector<std::uint32_t> out_;
   std::string message_;
   bool keep_closed_ = !K::exact;
@@ -749,6 +751,24 @@ bool Tanemura<K, D>::trace_of_ball(std::uint32_t h, Ball& t) const {
 }
 
 template <class K, int D>
+typename Tanemura<K, D>::FlatPlane Tanemura<K, D>::flat_plane(const std::array<std::uint32_t, D>& refs) const {
+  FlatPlane pl;
+  pl.at = scaled(refs[0]);
+  std::array<std::array<Iv, D>, D - 1> e;  // the other points minus at
+  for (int j = 1; j < D; ++j) {
+    const std::array<Iv, D> q = scaled(refs[j]);
+    for (int i = 0; i < D; ++i) e[j - 1][i] = q[i] - pl.at[i];
+  }
+  if constexpr (D == 2)
+    pl.normal = {Iv{0, 0} - e[0][1], e[0][0]};
+  else
+    pl.normal = cross(e[0], e[1]);
+  pl.nn = Iv{0, 0};
+  for (int i = 0; i < D; ++i) pl.nn = pl.nn + sq(pl.normal[i]);
+  return pl;
+}
+
+template <class K, int D>
 bool Tanemura<K, D>::on_known_hull_plane(const Facet& f) {
   // A hull facet h has no point strictly on its open side (exact search). If
   // every vertex of f lies on h's plane (exact orient = 0) and h's inner
@@ -990,22 +1010,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     flat_mask_.assign(flats_.count(), 0);
     flat_ball_at_.assign(flats_.count(), 0u);
     flat_balls_.assign(flats_.count(), Ball{});
-    flat_planes_.resize(flats_.count());
-    for (std::uint32_t h = 0; h < flats_.count(); ++h) {
-      FlatPlane& pl = flat_planes_[h];
-      const std::array<std::uint32_t, D>& r = flats_.refs(h);
-      pl.at = scaled(r[0]);
-      std::array<Iv, D> u, v;
-      for (int i = 0; i < D; ++i) u[i] = scaled(r[1])[i] - pl.at[i];
-      if constexpr (D == 2) {
-        pl.normal = {Iv{0, 0} - u[1], u[0]};
-      } else {
-        for (int i = 0; i < D; ++i) v[i] = scaled(r[2])[i] - pl.at[i];
-        pl.normal = cross(u, v);
-      }
-      pl.nn = Iv{0, 0};
-      for (int i = 0; i < D; ++i) pl.nn = pl.nn + sq(pl.normal[i]);
-    }
+    flat_planes_.clear();
+    for (std::uint32_t h = 0; h < flats_.count(); ++h) flat_planes_.push_back(flat_plane(flats_.refs(h)));
     // Per point, only where there are flats (12 bytes a point of uniform input otherwise).
     on_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
     off_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
@@ -1035,7 +1041,8 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head));
       head = 0;
     }
-    if (head < queue_.size()) table_.prefetch(Table::sorted(queue_[head].f));  // the next one's slot, during this search
+    // The next facet's slot is fetched during this one's search.
+    if (head < queue_.size()) table_.prefetch(Table::sorted(queue_[head].f));
     const std::size_t at = table_.find(Table::sorted(f));
     if (at == Table::npos || table_.at(at).state != Table::State::open) continue;  // closed since
     const std::uint64_t examined_before = examined_;
