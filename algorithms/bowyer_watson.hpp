@@ -26,9 +26,11 @@
 // loop is bounded (stamps visit each simplex at most once per insertion).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/cavity.hpp"
@@ -38,6 +40,7 @@
 #include "algorithms/locate.hpp"
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
+#include "algorithms/simplex_guard.hpp"
 #include "algorithms/triangulation_result.hpp"
 
 namespace dlab {
@@ -74,11 +77,20 @@ class BowyerWatson {
   Mesh<D> mesh_;
   Restar<D> restar_;
   const Point<D>* pts_ = nullptr;
-  std::vector<std::uint32_t> merged_;
+  // The points merged into an earlier vertex (duplicates): (point, vertex).
+  // With the initial simplex's vertices and the points inserted before the
+  // run ended, they give TriangulationResult::merged_into after the mesh is
+  // gone (merged_into); an array of n words during the run would add 4 bytes
+  // per point to the peak memory.
+  std::vector<std::array<std::uint32_t, 2>> merges_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryRecord<D>> records_;
   std::uint32_t last_ = 0;   // where the next walk starts
   std::uint32_t stamp_ = 0;  // cavity stamp: stamp_ = in, stamp_ + 1 = out
+  // Where the stamps live: 3D in a byte per slot of their own (the mesh has
+  // no 4-byte mark array: 20 bytes per point less), 2D in the mesh's blocks
+  // (free).
+  std::conditional_t<D == 3, ByteMarks, NoGuard> stamps_;
   WalkRng rng_;
   LocationScheme location_ = LocationScheme::walk;
   std::string message_;
@@ -120,7 +132,7 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     for (int j = 0; j < V; ++j) {
       const std::uint32_t w = mesh_.vertex(loc.simplex, j);
       if (w != kGhost && pts_[w] == p) {
-        merged_[i] = w;
+        merges_.push_back({i, w});
         ++duplicates_;
         last_ = loc.simplex;
         return true;
@@ -129,13 +141,21 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
   }
 
   // Cavity search (algorithms/cavity_search.hpp).
-  if (stamp_ >= 0xFFFFFFF0u) {
-    for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
-    stamp_ = 0;
+  if constexpr (D == 3) {
+    stamp_ = 1;
+    stamps_.cover(mesh_.slots());
+  } else {
+    if (stamp_ >= 0xFFFFFFF0u) {
+      for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
+      stamp_ = 0;
+    }
+    stamp_ += 2;
   }
-  stamp_ += 2;
-  NoGuard whole_mesh;
-  search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, whole_mesh);
+  search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stamps_);
+  if constexpr (D == 3) {  // what the search marked: the cavity and its outside neighbours
+    for (std::uint32_t s : cavity_) stamps_.unmark(s);
+    for (const BoundaryRecord<D>& r : records_) stamps_.unmark(Mesh<D>::simplex_of(r.outside));
+  }
   cavity_total_ += cavity_.size();
   cavity_max_ = std::max<std::uint64_t>(cavity_max_, cavity_.size());
   cavity_sizes_.add(cavity_.size());
@@ -156,7 +176,6 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     fail("insertion #" + std::to_string(i) + ": " + err);
     return false;
   }
-  merged_[i] = i;
   last_ = first;
   return true;
 }
@@ -166,19 +185,36 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
-  const std::optional<std::uint32_t> first = start_incremental_mesh<D>(k_, pts, mesh_, merged_, res);
-  if (!first) return res;
-  last_ = *first;
+  if constexpr (D == 3) mesh_.without_marks();
+  merges_.clear();
+  const std::optional<IncrementalStart<D>> start = start_incremental_mesh<D>(k_, pts, mesh_, res);
+  if (!start) return res;
+  if constexpr (D == 3) {
+    stamps_ = ByteMarks();
+    stamps_.reserve(mesh_.capacity());
+  }
+  last_ = start->simplex;
+  const auto& initial = start->ids;
 
+  std::uint32_t end = static_cast<std::uint32_t>(n);  // the points processed: those before end, and initial
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (merged_[i] != kNotProcessed) continue;  // a vertex of the initial simplex
+    if (std::find(initial.begin(), initial.end(), i) != initial.end()) continue;  // already a vertex
     if (!insert(i)) {
       res.outcome = RunResult::Outcome::failed;
       res.message = message_;
+      end = i;
       break;
     }
   }
+  auto merged_into = [&] {
+    std::vector<std::uint32_t> m(n, kNotProcessed);
+    for (std::uint32_t i = 0; i < end; ++i) m[i] = i;
+    for (std::uint32_t i : initial) m[i] = i;
+    for (const auto& [i, w] : merges_) m[i] = w;
+    return m;
+  };
 
+  if constexpr (!K::exact) res.merged_into = merged_into();  // read by the check below
   if (res.outcome == RunResult::Outcome::ok) {
     if constexpr (!K::exact) {
       // A cavity that swallowed a vertex leaves it out of every simplex.
@@ -187,14 +223,13 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
         for (int j = 0; j < V; ++j) present[mesh_.vertex(s, j)] = true;
       });
       for (std::uint32_t i = 0; i < n; ++i)
-        if (merged_[i] == i && !present[i]) {
+        if (res.merged_into[i] == i && !present[i]) {
           res.outcome = RunResult::Outcome::failed;
           res.message = "the vertex of insertion #" + std::to_string(i) + " was lost (enclosed in a cavity)";
           break;
         }
     }
   }
-  res.merged_into = std::move(merged_);
   res.counters = {
       {"walk_steps", walk_steps_},
       {"scan_tests", scan_tests_},
@@ -209,6 +244,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   cavity_sizes_.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (mesh() is then empty).
   if (res.outcome == RunResult::Outcome::ok) res.simplices = mesh_.take_finite_simplices();
+  if constexpr (K::exact) res.merged_into = merged_into();  // the mesh is gone: not part of the peak
   return res;
 }
 

@@ -158,7 +158,7 @@ class Restar {
         error = "cavity boundary is not closed (a boundary edge without a successor)";
         return false;
       }
-      const std::uint32_t next = cycle_[h].record;
+      const std::uint32_t next = cycle_[h].value;
       m.link(Mesh<D>::encode(ids_[r], (slot + 1) % 3),
              Mesh<D>::encode(ids_[next], (records[next].slot + 2) % 3));
     }
@@ -189,7 +189,9 @@ class Restar {
   }();
 
   // 3D (HXT's scheme, Marot et al. 2019, re-derived): boundary vertices get
-  // local ids (<= 32, else fall back to hashing); each internal facet
+  // local ids (<= 32, else fall back to hashing; a 128-entry table vertex ->
+  // id, load <= 36/128, instead of a word per vertex of the mesh, which would
+  // add 4 to 6 bytes per point to the peak memory); each internal facet
   // (p, a, b) of a new tetrahedron is written at table[a][b], with (a, b)
   // ordered so that the tetrahedron's own remaining vertex is on the positive
   // side of the oriented facet; the tetrahedron across it sees the facet
@@ -198,37 +200,18 @@ class Restar {
   // Returns false with an empty error when the cavity is too large.
   template <class M>
   bool link_local(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
-    if (++local_stamp_ >= (1u << 26)) {  // the stamp lives in 26 bits of loc_
-      std::fill(loc_.begin(), loc_.end(), 0u);
+    if (++local_stamp_ == 0) {  // wrapped: clear once every 2^32 uses
+      for (auto& e : local_) e.stamp = 0;
       for (auto& e : pair_) e.stamp = 0;
       local_stamp_ = 1;
     }
-    const std::uint32_t tag = local_stamp_ << 6;
     std::uint32_t count = 0;
-    // loc_ holds one entry per vertex id and a last one for the ghost.
-    std::uint32_t maxv = 0;
-    for (const BoundaryRecord<D>& rec : records)
-      for (int i = 0; i < 4; ++i)
-        if (rec.v[i] != kGhost) maxv = std::max(maxv, rec.v[i]);
-    if (loc_.size() < std::size_t(maxv) + 2) {
-      std::vector<std::uint32_t> grown(std::max<std::size_t>(std::size_t(maxv) + 2, 2 * loc_.size()), 0u);
-      if (!loc_.empty()) {
-        std::copy(loc_.begin(), loc_.end() - 1, grown.begin());
-        grown.back() = loc_.back();
-      }
-      loc_.swap(grown);
-    }
-    std::uint32_t* const loc = loc_.data();
-    const std::uint32_t ghost_index = static_cast<std::uint32_t>(loc_.size() - 1);
-    // Branch-free: a vertex not seen in this insertion gets the next id.
+    // A vertex not seen in this insertion gets the next id.
     auto local = [&](std::uint32_t v) -> std::uint32_t {
-      const std::uint32_t at = std::min(v, ghost_index);  // the ghost is the largest id
-      const std::uint32_t e = loc[at];
-      const bool fresh = (e & ~63u) != tag;
-      const std::uint32_t val = fresh ? (tag | (count & 63u)) : e;
-      loc[at] = val;
-      count += fresh;
-      return val & 63u;
+      unsigned h = (v * 0x9E3779B1u) >> 25;
+      while (local_[h].stamp == local_stamp_ && local_[h].vertex != v) h = (h + 1) & 127;
+      if (local_[h].stamp != local_stamp_) local_[h] = {v, count++, local_stamp_};
+      return local_[h].value;
     };
     // Local ids of each record's vertices (p's entry unused).
     lv_.resize(records.size() * 4);
@@ -341,15 +324,15 @@ class Restar {
   };
   std::vector<Entry> table_;
   std::vector<std::uint32_t> ids_;
-  struct CycleEntry {
-    std::uint32_t vertex = 0, record = 0, stamp = 0;
+  struct VertexEntry {
+    std::uint32_t vertex = 0, value = 0, stamp = 0;
   };
-  std::array<CycleEntry, 64> cycle_{};
+  std::array<VertexEntry, 64> cycle_{};   // vertex -> record (link_cycle)
+  std::array<VertexEntry, 128> local_{};  // vertex -> local id (link_local)
   struct PairEntry {
     std::uint32_t value = 0, stamp = 0;
   };
   std::array<PairEntry, 32 * 32> pair_{};
-  std::vector<std::uint32_t> loc_;  // per vertex: stamp << 6 | local id
   std::vector<std::uint32_t> lv_;   // local ids of the records' vertices
   std::uint32_t local_stamp_ = 0;
   std::uint32_t cycle_stamp_ = 0;

@@ -136,15 +136,19 @@ std::uint32_t build_initial_mesh(Mesh<D>& m, const std::array<std::uint32_t, D +
   return all[0];
 }
 
-// The start of an incremental run over pts (both Bowyer–Watsons): `merged`
-// reset to kNotProcessed and `m` emptied; the initial simplex, the mesh
-// reserved for the whole run and built on it, its vertices marked as processed
-// in `merged`.  Returns the finite simplex, or nothing when there is no initial
-// simplex (the outcome is then in `res`).
+// The start of an incremental run over pts (both Bowyer–Watsons): `m`
+// emptied, reserved for the whole run and built on the initial simplex.
+// Returns the finite simplex and the initial simplex's vertices (the points
+// processed first), or nothing when there is no initial simplex (the outcome
+// is then in `res`).
+template <int D>
+struct IncrementalStart {
+  std::uint32_t simplex;
+  std::array<std::uint32_t, D + 1> ids;
+};
 template <int D, class K>
-std::optional<std::uint32_t> start_incremental_mesh(const K& k, std::span<const Point<D>> pts, Mesh<D>& m,
-                                                    std::vector<std::uint32_t>& merged, TriangulationResult& res) {
-  merged.assign(pts.size(), kNotProcessed);
+std::optional<IncrementalStart<D>> start_incremental_mesh(const K& k, std::span<const Point<D>> pts, Mesh<D>& m,
+                                                          TriangulationResult& res) {
   m.clear();
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k, pts, res);
   if (!init.found) return std::nullopt;
@@ -154,8 +158,7 @@ std::optional<std::uint32_t> start_incremental_mesh(const K& k, std::span<const 
   // double the peak memory) on most inputs.
   const std::size_t n = pts.size();
   m.reserve(D == 2 ? 2 * n + 16 : 7 * n + 64);
-  for (std::uint32_t id : init.ids) merged[id] = id;
-  return build_initial_mesh<D>(m, init.ids);
+  return IncrementalStart<D>{build_initial_mesh<D>(m, init.ids), init.ids};
 }
 
 }  // namespace dlab

@@ -24,7 +24,8 @@
 //  - mark(s): one uint32 per simplex for algorithms' stamps (cavity membership,
 //    visited flags): bump a counter instead of clearing sets. 2D keeps it in
 //    the block's first padding word (no array of its own, and the same cache
-//    line as the simplex), 3D in an array beside the blocks.
+//    line as the simplex), 3D in an array beside the blocks, unless the owner
+//    keeps its stamps elsewhere (without_marks: no array at all).
 // The mesh never sees a coordinate: algorithms ask predicates on vertex ids.
 #pragma once
 #include <algorithm>
@@ -88,9 +89,18 @@ class Mesh {
   }
   void reserve(std::size_t simplices) {
     d_.reserve(simplices * S);  // S words per simplex (2D: padded to 8)
-    if constexpr (!kMarkInBlock) mark_.reserve(simplices);
+    if constexpr (!kMarkInBlock)
+      if (has_marks_) mark_.reserve(simplices);
+  }
+  // From now on mark(), set_mark() and marks() must not be called: 3D keeps
+  // no mark array (its owner keeps stamps of its own: ByteMarks).
+  void without_marks() {
+    has_marks_ = false;
+    std::vector<std::uint32_t>().swap(mark_);
   }
 
+  // Slots the reserve holds without a reallocation.
+  std::size_t capacity() const { return d_.capacity() / S; }
   // Number of slots (live or free); simplex ids are < slots().
   std::uint32_t slots() const { return static_cast<std::uint32_t>(d_.size() / S); }
   std::uint32_t live() const { return live_; }
@@ -248,12 +258,13 @@ class Mesh {
     d_.resize(d_.size() + n * S, kNoNeighbour);
     if constexpr (kMarkInBlock)
       for (std::uint32_t s = first; s < slots(); ++s) d_[std::size_t(s) * S + kMarkWord] = 0;
-    else
+    else if (has_marks_)
       mark_.resize(mark_.size() + n, 0);
   }
   static std::size_t nb_index(std::uint32_t enc) { return std::size_t(enc / V) * S + V + enc % V; }
   std::vector<std::uint32_t, CacheAligned<std::uint32_t>> d_;
   std::vector<std::uint32_t> mark_;  // 3D's marks (2D: in the blocks)
+  bool has_marks_ = true;            // 3D: false after without_marks()
   std::vector<std::uint32_t> free_;
   std::uint32_t live_ = 0;
 };
@@ -276,7 +287,9 @@ std::vector<std::uint32_t> Mesh<D>::take_finite_simplices(Keep keep) {
     released = to;
   };
 #endif
-  constexpr std::uint32_t kChunk = 1u << 15;  // slots between two releases (1 MiB in 3D)
+  // Slots between two releases (128 KiB in 3D): the result written before a
+  // release (64 KiB) is all that the peak gains.
+  constexpr std::uint32_t kChunk = 1u << 12;
   for (std::uint32_t s = 0; s < slots(); ++s) {
     if (alive(s) && !is_ghost(s) && keep(vertices(s))) out.insert(out.end(), vertices(s), vertices(s) + V);
 #if defined(__linux__)

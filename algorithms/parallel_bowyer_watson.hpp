@@ -432,8 +432,10 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
-  const std::optional<std::uint32_t> first = start_incremental_mesh<D>(k_, pts, mesh_, merged_, res);
+  const std::optional<IncrementalStart<D>> first = start_incremental_mesh<D>(k_, pts, mesh_, res);
   if (!first) return res;
+  merged_.assign(n, kNotProcessed);
+  for (std::uint32_t id : first->ids) merged_[id] = id;
   reserve_next_.store(mesh_.slots(), std::memory_order_relaxed);
   reserve_end_ = mesh_.slots();
 
@@ -445,7 +447,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   for (unsigned t = 0; t < threads_; ++t) {
     workers_.emplace_back(k_, mesh_, static_cast<std::uint8_t>(t + 1));
     workers_.back().guard.rebind(mesh_.marks());
-    workers_.back().last = *first;
+    workers_.back().last = first->simplex;
     workers_.back().stamp = 2 * t;
   }
 

@@ -2,7 +2,7 @@
 // each block's padding, 3D in an array) and take_finite_simplices, which hands
 // the slot array's pages back while it writes the result. Both are checked on
 // meshes of a real triangulation (Lawson, whose mesh() outlives run()) large
-// enough to span many release chunks (2^15 slots each).
+// enough to span many release chunks (2^12 slots each).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -42,7 +42,7 @@ std::vector<std::uint32_t> all_words(const Mesh<D>& m) {
 template <int D>
 void check_take(std::size_t n) {
   Mesh<D> m = triangulated_mesh<D>(n);
-  REQUIRE(m.slots() > 4 * (1u << 15));
+  REQUIRE(m.slots() > 32 * (1u << 12));
   Mesh<D> copy = m;
   std::vector<std::uint32_t> expected, without_vertex_0;
   m.for_each_finite([&](std::uint32_t s) {
@@ -93,4 +93,18 @@ TEST_CASE("mesh: take_finite_simplices equals for_each_finite and empties the me
 TEST_CASE("mesh: marks are per slot, start at 0 and touch no other word", "[mesh]") {
   check_marks<2>(70000);
   check_marks<3>(30000);
+}
+
+TEST_CASE("mesh: without marks, 3D holds its blocks only", "[mesh]") {
+  Mesh<3> m;
+  m.without_marks();
+  m.reserve(1000);
+  CHECK(m.bytes_reserved() == 32u * 1000);
+  CHECK(m.capacity() == 1000);
+  // Slots added past the reserve add no mark words either.
+  m.add_reserve(1500);
+  Mesh<3> with_marks;
+  with_marks.reserve(1000);
+  with_marks.add_reserve(1500);
+  CHECK(m.bytes_reserved() * 36 == with_marks.bytes_reserved() * 32);
 }
