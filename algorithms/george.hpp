@@ -181,7 +181,7 @@ bool George<K, D>::approx_conflict(std::uint32_t t, const Point<D>& p) {
       return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[w[3]], p) == Sign::positive;
   }
   ++float_tests_;
-  return spheres_.inside(t, p);
+  return spheres_.inside(t, pts_[w[0]], p);
 }
 
 // The sign of the new simplex (face f of cavity element s, joined to p), with

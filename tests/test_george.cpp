@@ -15,7 +15,9 @@
 #include <rapidcheck/catch.h>
 
 #include <catch2/catch.hpp>
+#include <array>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -70,9 +72,44 @@ TEST_CASE("george: circumsphere_of gives the circumsphere", "[george]") {
   CHECK(s3.r2 == 14);
   CircumsphereStore<3> st;
   st.set(5, {&p, &q, &r, &t});
-  CHECK(st.inside(5, Point3{1, 2, 3}));
-  CHECK(st.inside(5, Point3{1, 2, 3 + 3.74}));        // 3.74 < sqrt(14) = 3.7417
-  CHECK_FALSE(st.inside(5, Point3{1, 2, 3 + 3.75}));  // 3.75 > sqrt(14)
+  CHECK(st.inside(5, p, Point3{1, 2, 3}));
+  CHECK(st.inside(5, p, Point3{1, 2, 3 + 3.74}));        // 3.74 < sqrt(14) = 3.7417
+  CHECK_FALSE(st.inside(5, p, Point3{1, 2, 3 + 3.75}));  // 3.75 > sqrt(14)
+}
+
+// The table keeps the centre's offset from vertex 0 and rebuilds the centre
+// and r^2 per test: its answers must be those of a table of the centre and
+// r^2 themselves (circumsphere_of), bit for bit, on points within a few ulps
+// of the sphere, where a radius recomputed any other way (say from the rounded
+// centre to vertex 0) answers differently.
+TEST_CASE("george: the stored offset answers as a table of centres and radii", "[george]") {
+  std::mt19937_64 g(19);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int disagreements = 0, inside = 0, tests = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const double scale = std::ldexp(1.0, static_cast<int>(g() % 61) - 30);
+    std::array<Point3, 4> v;
+    for (Point3& q : v)
+      for (double& x : q) x = 7 + scale * unit(g);
+    CircumsphereStore<3> st;
+    st.set(0, {&v[0], &v[1], &v[2], &v[3]});
+    const Circumsphere<3> s = circumsphere_of<3>({&v[0], &v[1], &v[2], &v[3]});
+    for (int j = 0; j < 4; ++j) {
+      // A vertex nudged by a few ulps in each coordinate: on the sphere within rounding.
+      Point3 p = v[j];
+      for (double& x : p) x = std::nextafter(x, (g() & 1) ? 1e300 : -1e300);
+      double d2 = 0;
+      for (int i = 0; i < 3; ++i) d2 += (p[i] - s.centre[i]) * (p[i] - s.centre[i]);
+      const bool table = d2 < s.r2;
+      disagreements += st.inside(0, v[0], p) != table;
+      inside += table;
+      ++tests;
+    }
+  }
+  CHECK(disagreements == 0);
+  // Both answers occur: the points straddle the sphere.
+  CHECK(inside > tests / 10);
+  CHECK(inside < tests - tests / 10);
 }
 
 TEST_CASE("george: floating sphere test, always valid on every generator", "[george]") {
@@ -89,6 +126,22 @@ TEST_CASE("george: floating sphere test, always valid on every generator", "[geo
         CHECK(test::counter(r.counters, "valid") == 1);
         CHECK(test::counter(r.counters, "non_delaunay_facets") == rep.non_delaunay_facets());
       }
+}
+
+// On points in general position with no near-degeneracy the floating sphere
+// is right wherever it is asked, so the floating test must give the Delaunay
+// triangulation itself: a sphere rebuilt about the wrong vertex or with the
+// wrong radius (circumsphere_store.hpp) leaves non-Delaunay facets here.
+TEST_CASE("george: the floating sphere test is Delaunay on uniform points", "[george]") {
+  for (int dim : {2, 3}) {
+    const PointSet ps = make_points("uniform", dim, dim == 2 ? 3000 : 1500, 11);
+    const RunResult r = george(ps, "adaptive");
+    REQUIRE(r.outcome == RunResult::Outcome::ok);
+    const ValidationReport rep = validate(r.points, r.simplices);
+    CHECK(rep.valid());
+    CHECK(rep.non_delaunay_facets() == 0);
+    CHECK(test::counter(r.counters, "float_sphere_tests") > 0);
+  }
 }
 
 TEST_CASE("george: coplanar and kettner inputs stay valid", "[george]") {
