@@ -103,9 +103,6 @@ class InInsertionOrder {
   std::vector<bool> done_;
 };
 
-// Runs the algorithm on pts, which are put in insertion order for the run
-// (design.md section 7 item 7: ids are insertion positions) and restored
-// after it: no second copy of the points during the run.
 // The heap's free pages go back to the system before a run, whose peak is
 // the memory reported (peak_rss_bytes): glibc keeps freed blocks below its
 // dynamic mmap threshold (up to 32 MiB) in the heap, so the parser's and the
@@ -118,6 +115,9 @@ inline void release_free_heap(std::size_t points) {
 #endif
 }
 
+// Runs the algorithm on pts, which are put in insertion order for the run
+// (design.md section 7 item 7: ids are insertion positions) and restored
+// after it: no second copy of the points during the run.
 template <template <class, int> class Algo, class K, int D>
 void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, RunResult& r) {
   const auto t0 = std::chrono::steady_clock::now();
