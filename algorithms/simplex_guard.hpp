@@ -58,22 +58,25 @@ class ByteMarks {
   void reserve(std::size_t slots) { marks_.reserve(slots); }
   // Slots below `slots` can be marked (new ones read 0); call before a search.
   void cover(std::size_t slots) {
-    if (marks_.size() < slots) marks_.resize(slots, 0);
+    if (marks_.size() < slots) marks_.resize(slots, Mark{});
   }
   template <class M>
   std::uint32_t mark(const M&, std::uint32_t s) const {
-    return marks_[s];
+    return static_cast<std::uint32_t>(marks_[s]);
   }
   // stamp < 256.
   template <class M>
   void set_mark(M&, std::uint32_t s, std::uint32_t stamp) {
-    marks_[s] = static_cast<std::uint8_t>(stamp);
+    marks_[s] = static_cast<Mark>(stamp);
   }
   // Back to 0: the owner unmarks every simplex a search marked.
-  void unmark(std::uint32_t s) { marks_[s] = 0; }
+  void unmark(std::uint32_t s) { marks_[s] = Mark{}; }
 
  private:
-  std::vector<std::uint8_t> marks_;
+  // A byte that is not a character type: a store to a std::uint8_t may alias
+  // any object, so the search would reload its pointers after every mark.
+  enum class Mark : std::uint8_t {};
+  std::vector<Mark> marks_;
 };
 
 class LockGuard {
