@@ -26,7 +26,6 @@
 // loop is bounded (stamps visit each simplex at most once per insertion).
 #pragma once
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -38,6 +37,7 @@
 #include "algorithms/cavity_search.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/locate.hpp"
+#include "algorithms/merge_record.hpp"
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
 #include "algorithms/simplex_guard.hpp"
@@ -77,12 +77,7 @@ class BowyerWatson {
   Mesh<D> mesh_;
   Restar<D> restar_;
   const Point<D>* pts_ = nullptr;
-  // The points merged into an earlier vertex (duplicates): (point, vertex).
-  // With the initial simplex's vertices and the points inserted before the
-  // run ended, they give TriangulationResult::merged_into after the mesh is
-  // gone (merged_into); an array of n words during the run would add 4 bytes
-  // per point to the peak memory.
-  std::vector<std::array<std::uint32_t, 2>> merges_;
+  MergeRecord<D> merged_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryRecord<D>> records_;
   std::uint32_t last_ = 0;   // where the next walk starts
@@ -132,7 +127,7 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     for (int j = 0; j < V; ++j) {
       const std::uint32_t w = mesh_.vertex(loc.simplex, j);
       if (w != kGhost && pts_[w] == p) {
-        merges_.push_back({i, w});
+        merged_.merge(i, w);
         ++duplicates_;
         last_ = loc.simplex;
         return true;
@@ -186,7 +181,6 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   pts_ = pts.data();
   const std::size_t n = pts.size();
   if constexpr (D == 3) mesh_.without_marks();
-  merges_.clear();
   const std::optional<IncrementalStart<D>> start = start_incremental_mesh<D>(k_, pts, mesh_, res);
   if (!start) return res;
   if constexpr (D == 3) {
@@ -194,27 +188,19 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
     stamps_.reserve(mesh_.capacity());
   }
   last_ = start->simplex;
-  const auto& initial = start->ids;
+  merged_.start(n, start->ids);
 
-  std::uint32_t end = static_cast<std::uint32_t>(n);  // the points processed: those before end, and initial
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (std::find(initial.begin(), initial.end(), i) != initial.end()) continue;  // already a vertex
+    if (merged_.is_initial(i)) continue;  // already a vertex
     if (!insert(i)) {
       res.outcome = RunResult::Outcome::failed;
       res.message = message_;
-      end = i;
+      merged_.stop_before(i);
       break;
     }
   }
-  auto merged_into = [&] {
-    std::vector<std::uint32_t> m(n, kNotProcessed);
-    for (std::uint32_t i = 0; i < end; ++i) m[i] = i;
-    for (std::uint32_t i : initial) m[i] = i;
-    for (const auto& [i, w] : merges_) m[i] = w;
-    return m;
-  };
 
-  if constexpr (!K::exact) res.merged_into = merged_into();  // read by the check below
+  if constexpr (!K::exact) res.merged_into = merged_.merged_into();  // read by the check below
   if (res.outcome == RunResult::Outcome::ok) {
     if constexpr (!K::exact) {
       // A cavity that swallowed a vertex leaves it out of every simplex.
@@ -244,7 +230,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   cavity_sizes_.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (mesh() is then empty).
   if (res.outcome == RunResult::Outcome::ok) res.simplices = mesh_.take_finite_simplices();
-  if constexpr (K::exact) res.merged_into = merged_into();  // the mesh is gone: not part of the peak
+  if constexpr (K::exact) res.merged_into = merged_.merged_into();  // the mesh is gone: not part of the peak
   return res;
 }
 

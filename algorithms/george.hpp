@@ -85,6 +85,7 @@
 #include "algorithms/george_box.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/locate.hpp"
+#include "algorithms/merge_record.hpp"
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
 #include "algorithms/triangulation_result.hpp"
@@ -135,7 +136,7 @@ class George {
   std::vector<Point<D>> box_pts_;  // input + box corners (enclosing_box)
   const Point<D>* pts_ = nullptr;
   std::size_t npts_ = 0;            // points including box corners
-  std::vector<std::uint32_t> merged_;
+  MergeRecord<D> merged_;  // which vertex each point became
   std::vector<std::uint32_t> cavity_, queue_;
   std::vector<BoundaryRecord<D>> records_;
   std::vector<std::uint32_t> rec_src_;  // cavity element of each record
@@ -352,7 +353,7 @@ bool George<K, D>::insert(std::uint32_t i) {
     for (int j = 0; j < V; ++j) {
       const std::uint32_t w = mesh_.vertex(loc.simplex, j);
       if (w != kGhost && pts_[w] == p) {
-        merged_[i] = w;
+        merged_.merge(i, w);
         ++duplicates_;
         last_ = loc.simplex;
         return true;
@@ -427,7 +428,6 @@ bool George<K, D>::insert(std::uint32_t i) {
     return false;
   }
   for (std::uint32_t s : restar_.created()) store_sphere(s);
-  merged_[i] = i;
   last_ = first;
   return true;
 }
@@ -436,7 +436,6 @@ template <class K, int D>
 TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   TriangulationResult res;
   const std::size_t n = pts.size();
-  merged_.assign(n, kNotProcessed);
   mesh_.clear();
   spheres_.clear();
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
@@ -451,6 +450,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
                             : "the enclosing box does not fit in finite doubles";
       return res;
     }
+    merged_.start(n);
     box_pts_.assign(pts.begin(), pts.end());
     box_pts_.insert(box_pts_.end(), corners->begin(), corners->end());
     pts_ = box_pts_.data();
@@ -463,18 +463,18 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
     npts_ = n;
     last_ = build_initial_mesh<D>(mesh_, init.ids);
     store_sphere(last_);
-    for (std::uint32_t id : init.ids) merged_[id] = id;
+    merged_.start(n, init.ids);
   }
 
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (merged_[i] != kNotProcessed) continue;
+    if (merged_.is_initial(i)) continue;  // already a vertex
     if (!insert(i)) {
       res.outcome = RunResult::Outcome::failed;
       res.message = message_;
+      merged_.stop_before(i);
       break;
     }
   }
-  res.merged_into = std::move(merged_);
   res.counters = {
       {"walk_steps", walk_steps_},
       {"base_simplices", base_total_},
@@ -506,6 +506,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
       return keep;
     });
   if (opt_.enclosing_box) res.counters.push_back({"box_simplices_removed", box_removed_});
+  res.merged_into = merged_.merged_into();  // the mesh is gone: not part of the peak
   return res;
 }
 

@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include "algorithms/merge_record.hpp"
 #include "predicates/mp_kernel.hpp"
 #include "predicates/perturbed.hpp"
 #include "variants/insertion_order.hpp"
@@ -289,6 +290,26 @@ TEST_CASE("bw: duplicates map to their first occurrence, whatever the order", "[
     check_triangulation<3>(c, r, true);
     for (std::uint32_t v : r.simplices) CHECK(v < 8);
   }
+}
+
+// The sparse record behind merged_into (algorithms/merge_record.hpp), as both
+// Bowyer–Watson and George fill it: initial vertices first, duplicates merged,
+// a run that stops before point 3.
+TEST_CASE("bw: the merge record gives every point's vertex, kNotProcessed after a stop", "[bw]") {
+  MergeRecord<2> m;
+  m.start(7, {4, 1, 6});
+  CHECK(m.is_initial(4));
+  CHECK(m.is_initial(6));
+  CHECK_FALSE(m.is_initial(0));
+  m.merge(2, 1);
+  m.stop_before(3);
+  const std::uint32_t np = kNotProcessed;
+  CHECK(m.merged_into() == std::vector<std::uint32_t>{0, 1, 1, np, 4, np, 6});
+  // No initial vertices (George's enclosing box); a run to the end.
+  m.start(4);
+  CHECK_FALSE(m.is_initial(0));
+  m.merge(3, 0);
+  CHECK(m.merged_into() == std::vector<std::uint32_t>{0, 1, 2, 0});
 }
 
 TEST_CASE("bw: lower-dimensional inputs give no simplex and say why", "[bw]") {
