@@ -11,7 +11,8 @@
 //      O(N^2) in all, Baker ch. 16.2.2; counter scan_tests); a point equal
 //      to a vertex of the simplex found is a duplicate and is merged into that
 //      vertex;
-//   2. cavity: the simplices in conflict with p (algorithms/cavity_search.hpp;
+//   2. cavity: the simplices in conflict with p (algorithms/cavity_search.hpp,
+//      in 2D with an exact kernel depth first, its boundary in cycle order;
 //      with the `sos` policy K is perturbed<...>, which never answers zero,
 //      giving the unique perturbed Delaunay triangulation, CGAL's);
 //   3. re-star: connect p to every boundary facet (algorithms/cavity.hpp).
@@ -80,6 +81,7 @@ class BowyerWatson {
   MergeRecord<D> merged_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryRecord<D>> records_;
+  std::vector<CcwFrame> stack_;  // search_cavity_ccw's
   std::uint32_t last_ = 0;   // where the next walk starts
   std::uint32_t stamp_ = 0;  // cavity stamp: stamp_ = in, stamp_ + 1 = out
   // Where the stamps live: 3D in a byte per slot of their own (the mesh has
@@ -146,7 +148,10 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     }
     stamp_ += 2;
   }
-  search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stamps_);
+  if constexpr (D == 2 && K::exact)  // records in cycle order: Restar links them without a table
+    search_cavity_ccw<K>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stack_);
+  else
+    search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stamps_);
   if constexpr (D == 3) {  // what the search marked: the cavity and its outside neighbours
     for (std::uint32_t s : cavity_) stamps_.unmark(s);
     for (const BoundaryRecord<D>& r : records_) stamps_.unmark(Mesh<D>::simplex_of(r.outside));

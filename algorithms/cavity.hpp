@@ -13,8 +13,10 @@
 // Every other facet of a new simplex contains p and D-1 boundary vertices; such
 // a facet is shared by exactly two new simplices (the cavity boundary is a
 // closed (D-1)-manifold: a cycle in 2D, a triangulated sphere in 3D).  In 2D
-// (cavities of up to 32 triangles) each new triangle finds its successor along
-// the cycle through a 64-entry table of the boundary edges' start vertices.  Otherwise they
+// the records of an exact kernel's search come in cycle order
+// (search_cavity_ccw), and each new triangle's successor is the next record;
+// otherwise (cavities of up to 32 triangles) each new triangle finds its
+// successor through a 64-entry table of the boundary edges' start vertices.  Otherwise they
 // are paired through a small open-addressing table keyed by those D-1 vertex
 // ids (design.md section 7 item 3 uses a 32x32 table on local ids; a hash on
 // global ids does the same job with no local numbering), marked by a stamp so
@@ -83,6 +85,7 @@ class Restar {
     // New simplices: cavity slots first, then fresh ones; link across the boundary.
     ids_.resize(records.size());
     std::uint32_t first = kNoNeighbour;
+    bool first_finite = false;
     for (std::size_t r = 0; r < records.size(); ++r) {
       const BoundaryRecord<D>& rec = records[r];
       std::uint32_t s;
@@ -93,12 +96,16 @@ class Restar {
         s = m.create(rec.v.data());
       }
       ids_[r] = s;
-      if (first == kNoNeighbour || (m.is_ghost(first) && rec.v[D] != kGhost)) first = s;
+      if (!first_finite && (first == kNoNeighbour || rec.v[D] != kGhost)) {  // the mesh is not read
+        first = s;
+        first_finite = rec.v[D] != kGhost;
+      }
       m.link(Mesh<D>::encode(s, rec.slot), rec.outside);
     }
     bool ok;
     if constexpr (D == 2)
-      ok = records.size() <= 32 ? link_cycle(m, records, error) : link_hashed(m, records, error);
+      ok = (!verify && link_chain(m, records)) ||
+           (records.size() <= 32 ? link_cycle(m, records, error) : link_hashed(m, records, error));
     else
       ok = link_local(m, records, error) || (error.empty() && link_hashed(m, records, error));
     if (!ok) return kNoNeighbour;
@@ -124,6 +131,25 @@ class Restar {
   const std::vector<std::uint32_t>& created() const { return ids_; }
 
  private:
+  // 2D, records in counterclockwise order around the cavity (as
+  // search_cavity_ccw gives them): new triangle r is (p, u_r, w_r), and its
+  // edge (w_r, p) is shared with triangle r+1 (mod k) when u_{r+1} = w_r.
+  // With an exact kernel every boundary vertex starts exactly one boundary
+  // edge, so a chain that closes is the cycle; false at the first link
+  // missing (records in another order), and link_cycle then sets every link.
+  template <class M>
+  bool link_chain(M& m, const std::vector<BoundaryRecord<D>>& records) {
+    static constexpr int after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
+    const std::size_t k = records.size();
+    for (std::size_t r = 0; r < k; ++r) {
+      const std::size_t next = r + 1 == k ? 0 : r + 1;
+      const int slot = records[r].slot, next_slot = records[next].slot;
+      if (records[r].v[before[slot]] != records[next].v[after[next_slot]]) return false;
+      m.link(Mesh<D>::encode(ids_[r], after[slot]), Mesh<D>::encode(ids_[next], before[next_slot]));
+    }
+    return true;
+  }
+
   // 2D, small cavities: the boundary is one cycle.  New triangle r is
   // (p, u_r, w_r) counterclockwise, with u_r, w_r the vertices after p's slot;
   // its edge (w_r, p) (opposite u_r) is shared with the triangle whose u is w_r.

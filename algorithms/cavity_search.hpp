@@ -29,6 +29,13 @@ namespace dlab {
 
 enum class Conflict : unsigned char { no, yes, refused };
 
+// A triangle on search_cavity_ccw's stack: the next edge to cross and how
+// many of its edges are left.
+struct CcwFrame {
+  std::uint32_t simplex;
+  std::uint8_t edge, left;
+};
+
 template <class K, int D, class Guard>
 Conflict in_conflict(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t t, const Point<D>& p,
                      Guard& guard) {
@@ -86,6 +93,56 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
     }
   }
   return true;
+}
+
+// 2D, serial: the same cavity, found depth first with each triangle's edges
+// taken counterclockwise from the one it was entered by, so the boundary
+// records come out in counterclockwise order around the cavity: the Euler
+// tour of the search tree, whose internal edges are skipped (the cavity of an
+// exact kernel is star-shaped from p, so a disk whose boundary is one simple
+// cycle; CGAL's Delaunay_triangulation_2 collects its hole the same way).
+// Record r's edge then ends where record r+1's begins, which lets
+// Restar<2>::star link the new triangles without a table.  Edge f of a
+// counterclockwise triangle (v0, v1, v2) joins v[f+1] to v[f+2], so the edge
+// after f is f+1 (mod 3).
+template <class K>
+void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_t i, std::uint32_t start,
+                       std::uint32_t in, std::uint32_t out, std::vector<std::uint32_t>& cavity,
+                       std::vector<BoundaryRecord<2>>& records, std::vector<CcwFrame>& stack) {
+  const Point<2>& p = pts[i];
+  NoGuard guard;
+  cavity.clear();
+  records.clear();
+  stack.clear();
+  m.set_mark(start, in);
+  cavity.push_back(start);
+  stack.push_back({start, 0, 3});
+  while (!stack.empty()) {
+    CcwFrame& top = stack.back();
+    if (top.left == 0) {
+      stack.pop_back();
+      continue;
+    }
+    const std::uint32_t s = top.simplex;
+    const int f = top.edge;
+    top.edge = f == 2 ? 0 : f + 1;
+    --top.left;
+    const std::uint32_t enc = m.neighbour(s, f);
+    const std::uint32_t t = Mesh<2>::simplex_of(enc);
+    const std::uint32_t mk = m.mark(t);
+    if (mk == in) continue;
+    if (mk != out) {
+      if (in_conflict<K, 2>(k, m, pts, t, p, guard) == Conflict::yes) {
+        m.set_mark(t, in);
+        cavity.push_back(t);
+        const int j = Mesh<2>::facet_of(enc);
+        stack.push_back({t, static_cast<std::uint8_t>(j == 2 ? 0 : j + 1), 2});
+        continue;
+      }
+      m.set_mark(t, out);
+    }
+    records.push_back(boundary_record<2>(m, s, f, i, enc));
+  }
 }
 
 }  // namespace dlab

@@ -475,19 +475,34 @@ TEST_CASE("bw: insertion orders are permutations and deterministic", "[bw]") {
   const auto k00 = hilbert_key(c00.data(), 2, 1), k01 = hilbert_key(c01.data(), 2, 1);
   const auto k11 = hilbert_key(c11.data(), 2, 1), k10 = hilbert_key(c10.data(), 2, 1);
   CHECK(std::set<std::uint64_t>{k00, k01, k11, k10}.size() == 4);
-  // Consecutive keys are grid neighbours on a 16x16 grid (the curve is continuous).
-  std::vector<std::pair<std::uint64_t, std::array<int, 2>>> cells;
-  for (int x = 0; x < 16; ++x)
-    for (int y = 0; y < 16; ++y) {
-      std::uint32_t c[2] = {std::uint32_t(x), std::uint32_t(y)};
-      cells.push_back({hilbert_key(c, 2, 4), {x, y}});
+  // Consecutive keys are grid neighbours on 16x16 and 32x32 grids (the curve
+  // is continuous; 2D reads an even number of levels two at a time, an odd
+  // one first on its own).
+  for (int bits : {4, 5}) {
+    std::vector<std::pair<std::uint64_t, std::array<int, 2>>> cells;
+    for (int x = 0; x < (1 << bits); ++x)
+      for (int y = 0; y < (1 << bits); ++y) {
+        std::uint32_t c[2] = {std::uint32_t(x), std::uint32_t(y)};
+        cells.push_back({hilbert_key(c, 2, bits), {x, y}});
+      }
+    std::sort(cells.begin(), cells.end());
+    for (std::size_t i = 0; i < cells.size(); ++i) REQUIRE(cells[i].first == i);
+    for (std::size_t i = 1; i < cells.size(); ++i)
+      REQUIRE(std::abs(cells[i].second[0] - cells[i - 1].second[0]) +
+                  std::abs(cells[i].second[1] - cells[i - 1].second[1]) ==
+              1);
+  }
+  // One level finer refines the coarser curve: the key of (x, y) on b bits
+  // begins with the key of (x/2, y/2) on b - 1 bits (odd and even b alike).
+  std::uint64_t state = 7;
+  for (int bits = 2; bits <= 24; ++bits)
+    for (int trial = 0; trial < 200; ++trial) {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      const auto mask = (std::uint32_t(1) << bits) - 1;
+      std::uint32_t c[2] = {std::uint32_t(state >> 20) & mask, std::uint32_t(state >> 40) & mask};
+      std::uint32_t coarse[2] = {c[0] >> 1, c[1] >> 1};
+      REQUIRE(hilbert_key(c, 2, bits) >> 2 == hilbert_key(coarse, 2, bits - 1));
     }
-  std::sort(cells.begin(), cells.end());
-  for (std::size_t i = 0; i < cells.size(); ++i) REQUIRE(cells[i].first == i);
-  for (std::size_t i = 1; i < cells.size(); ++i)
-    REQUIRE(std::abs(cells[i].second[0] - cells[i - 1].second[0]) +
-                std::abs(cells[i].second[1] - cells[i - 1].second[1]) ==
-            1);
   // Same in 3D on an 8x8x8 grid.
   std::vector<std::pair<std::uint64_t, std::array<int, 3>>> cells3;
   for (int x = 0; x < 8; ++x)

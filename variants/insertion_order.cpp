@@ -26,7 +26,7 @@ InsertionOrder parse_insertion_order(std::string_view name) {
 // 3D (any n): Skilling 2004: convert axes to the "transposed" Hilbert index in place
 // (undo the excess rotations/reflections from the top bit down, then Gray
 // encode), and read the index off bit-plane by bit-plane.
-// 2D: a 4-state machine, one table look-up per level.  The state is the
+// 2D: a 4-state machine, one table look-up per two levels.  The state is the
 // transform (identity, transpose, anti-transpose, half-turn) that maps the
 // current sub-square onto the canonical one; these four form the Klein group,
 // encoded so that composition is XOR.  In the canonical square the quadrants
@@ -52,15 +52,36 @@ constexpr std::array<std::uint8_t, 16> kHilbert2 = [] {
       }
   return t;
 }();
+// Two levels per look-up: (state, 2 bits of x, 2 bits of y) -> (4 digit bits,
+// state), kHilbert2 applied twice.
+constexpr std::array<std::uint8_t, 64> kHilbert2x2 = [] {
+  std::array<std::uint8_t, 64> t{};
+  for (int m = 0; m < 4; ++m)
+    for (int xb = 0; xb < 4; ++xb)
+      for (int yb = 0; yb < 4; ++yb) {
+        const int e1 = kHilbert2[(m << 2) | ((xb >> 1) << 1) | (yb >> 1)];
+        const int e2 = kHilbert2[((e1 & 3) << 2) | ((xb & 1) << 1) | (yb & 1)];
+        t[(m << 4) | (xb << 2) | yb] = static_cast<std::uint8_t>((((e1 >> 2) << 2 | (e2 >> 2)) << 2) | (e2 & 3));
+      }
+  return t;
+}();
 }  // namespace
 
 std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
   if (n == 2) {
     std::uint64_t key = 0;
     unsigned m = 0;
-    for (int b = bits - 1; b >= 0; --b) {
-      const unsigned e = kHilbert2[(m << 2) | (((x[0] >> b) & 1u) << 1) | ((x[1] >> b) & 1u)];
-      key = (key << 2) | (e >> 2);
+    int b = bits;
+    if (b & 1) {  // an odd level first, then two at a time
+      --b;
+      const unsigned e = kHilbert2[(((x[0] >> b) & 1u) << 1) | ((x[1] >> b) & 1u)];
+      key = e >> 2;
+      m = e & 3u;
+    }
+    while (b > 0) {
+      b -= 2;
+      const unsigned e = kHilbert2x2[(m << 4) | (((x[0] >> b) & 3u) << 2) | ((x[1] >> b) & 3u)];
+      key = (key << 4) | (e >> 2);
       m = e & 3u;
     }
     return key;
