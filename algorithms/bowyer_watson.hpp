@@ -81,7 +81,7 @@ class BowyerWatson {
   MergeRecord<D> merged_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryRecord<D>> records_;
-  std::vector<CcwFrame> stack_;  // search_cavity_ccw's
+  std::vector<std::uint32_t> ccw_edges_;  // search_cavity_ccw's stack
   std::uint32_t last_ = 0;   // where the next walk starts
   std::uint32_t stamp_ = 0;  // cavity stamp: stamp_ = in, stamp_ + 1 = out
   // Where the stamps live: 3D in a byte per slot of their own (the mesh has
@@ -149,7 +149,7 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     stamp_ += 2;
   }
   if constexpr (D == 2 && K::exact)  // records in cycle order: Restar links them without a table
-    search_cavity_ccw<K>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stack_);
+    search_cavity_ccw<K>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, ccw_edges_);
   else
     search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stamps_);
   if constexpr (D == 3) {  // what the search marked: the cavity and its outside neighbours

@@ -29,13 +29,6 @@ namespace dlab {
 
 enum class Conflict : unsigned char { no, yes, refused };
 
-// A triangle on search_cavity_ccw's stack: the next edge to cross and how
-// many of its edges are left.
-struct CcwFrame {
-  std::uint32_t simplex;
-  std::uint8_t edge, left;
-};
-
 template <class K, int D, class Guard>
 Conflict in_conflict(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t t, const Point<D>& p,
                      Guard& guard) {
@@ -104,30 +97,25 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
 // Record r's edge then ends where record r+1's begins, which lets
 // Restar<2>::star link the new triangles without a table.  Edge f of a
 // counterclockwise triangle (v0, v1, v2) joins v[f+1] to v[f+2], so the edge
-// after f is f+1 (mod 3).
+// after f is f+1 (mod 3).  The stack holds the cavity edges still to cross,
+// as neighbour codes (4s + f), the next one on top.
 template <class K>
 void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_t i, std::uint32_t start,
                        std::uint32_t in, std::uint32_t out, std::vector<std::uint32_t>& cavity,
-                       std::vector<BoundaryRecord<2>>& records, std::vector<CcwFrame>& stack) {
+                       std::vector<BoundaryRecord<2>>& records, std::vector<std::uint32_t>& edges) {
+  static constexpr std::uint32_t after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
   const Point<2>& p = pts[i];
   NoGuard guard;
   cavity.clear();
   records.clear();
-  stack.clear();
+  edges.clear();
   m.set_mark(start, in);
   cavity.push_back(start);
-  stack.push_back({start, 0, 3});
-  while (!stack.empty()) {
-    CcwFrame& top = stack.back();
-    if (top.left == 0) {
-      stack.pop_back();
-      continue;
-    }
-    const std::uint32_t s = top.simplex;
-    const int f = top.edge;
-    top.edge = f == 2 ? 0 : f + 1;
-    --top.left;
-    const std::uint32_t enc = m.neighbour(s, f);
+  for (int f = 2; f >= 0; --f) edges.push_back(Mesh<2>::encode(start, f));
+  while (!edges.empty()) {
+    const std::uint32_t e = edges.back();
+    edges.pop_back();
+    const std::uint32_t enc = m.neighbour_enc(e);
     const std::uint32_t t = Mesh<2>::simplex_of(enc);
     const std::uint32_t mk = m.mark(t);
     if (mk == in) continue;
@@ -136,12 +124,13 @@ void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_
         m.set_mark(t, in);
         cavity.push_back(t);
         const int j = Mesh<2>::facet_of(enc);
-        stack.push_back({t, static_cast<std::uint8_t>(j == 2 ? 0 : j + 1), 2});
+        edges.push_back(Mesh<2>::encode(t, before[j]));  // crossed second
+        edges.push_back(Mesh<2>::encode(t, after[j]));   // crossed first
         continue;
       }
       m.set_mark(t, out);
     }
-    records.push_back(boundary_record<2>(m, s, f, i, enc));
+    records.push_back(boundary_record<2>(m, Mesh<2>::simplex_of(e), Mesh<2>::facet_of(e), i, enc));
   }
 }
 

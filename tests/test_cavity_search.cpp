@@ -51,7 +51,7 @@ TEST_CASE("cavity search 2D: depth first gives the breadth-first cavity, its bou
   std::uint32_t stamp = 0x40000000u;
   std::vector<std::uint32_t> cavity_bfs, cavity_dfs;
   std::vector<BoundaryRecord<2>> records_bfs, records_dfs;
-  std::vector<CcwFrame> stack;
+  std::vector<std::uint32_t> stack;
   WalkRng rng;
   std::uint32_t start = 0;
   while (!m.alive(start)) ++start;
