@@ -34,6 +34,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <new>
 #include <string>
 #include <vector>
@@ -157,7 +158,7 @@ class Mesh {
       s = slots();
       grow(1);
     }
-    std::copy_n(verts, V, vertices(s));
+    assign(s, verts);
     ++live_;
     return s;
   }
@@ -181,7 +182,16 @@ class Mesh {
   void adjust_live(std::int64_t delta) { live_ = static_cast<std::uint32_t>(std::int64_t(live_) + delta); }
 
   // Overwrite the vertices of a live slot (re-using a cavity slot in place).
-  void assign(std::uint32_t s, const std::uint32_t* verts) { std::copy_n(verts, V, vertices(s)); }
+  // 2D a loop, 3D one 16-byte copy: the fewest instructions measured (std::copy_n
+  // became a call to memmove in 2D, the loop added an overlap test in 3D).
+  void assign(std::uint32_t s, const std::uint32_t* verts) {
+    std::uint32_t* w = vertices(s);
+    if constexpr (D == 2) {
+      for (int i = 0; i < V; ++i) w[i] = verts[i];
+    } else {
+      std::memcpy(w, verts, V * sizeof(std::uint32_t));
+    }
+  }
 
   // Bytes held by the mesh's arrays (capacity, not size): the memory cost.
   std::size_t bytes_reserved() const {
