@@ -36,6 +36,10 @@
 
 namespace dlab {
 
+// In a counterclockwise triangle, edge f (opposite vertex f) joins vertex
+// kAfter[f] to vertex kBefore[f]; the next edge counterclockwise is kAfter[f].
+inline constexpr int kAfter[3] = {1, 2, 0}, kBefore[3] = {2, 0, 1};
+
 template <int D>
 struct BoundaryRecord {
   std::array<std::uint32_t, D + 1> v;  // vertices of the new simplex (p included)
@@ -139,13 +143,12 @@ class Restar {
   // missing (records in another order), and link_cycle then sets every link.
   template <class M>
   bool link_chain(M& m, const std::vector<BoundaryRecord<D>>& records) {
-    static constexpr int after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
     const std::size_t k = records.size();
     for (std::size_t r = 0; r < k; ++r) {
       const std::size_t next = r + 1 == k ? 0 : r + 1;
       const int slot = records[r].slot, next_slot = records[next].slot;
-      if (records[r].v[before[slot]] != records[next].v[after[next_slot]]) return false;
-      m.link(Mesh<D>::encode(ids_[r], after[slot]), Mesh<D>::encode(ids_[next], before[next_slot]));
+      if (records[r].v[kBefore[slot]] != records[next].v[kAfter[next_slot]]) return false;
+      m.link(Mesh<D>::encode(ids_[r], kAfter[slot]), Mesh<D>::encode(ids_[next], kBefore[next_slot]));
     }
     return true;
   }
@@ -164,7 +167,7 @@ class Restar {
     const std::size_t k = records.size();
     auto hash = [](std::uint32_t v) { return static_cast<unsigned>((v * 0x9E3779B1u) >> 26); };
     for (std::size_t r = 0; r < k; ++r) {
-      const std::uint32_t u = records[r].v[(records[r].slot + 1) % 3];
+      const std::uint32_t u = records[r].v[kAfter[records[r].slot]];
       unsigned h = hash(u);
       while (cycle_[h].stamp == cycle_stamp_) {
         if (cycle_[h].vertex == u) {
@@ -177,7 +180,7 @@ class Restar {
     }
     for (std::size_t r = 0; r < k; ++r) {
       const int slot = records[r].slot;
-      const std::uint32_t w = records[r].v[(slot + 2) % 3];
+      const std::uint32_t w = records[r].v[kBefore[slot]];
       unsigned h = hash(w);
       while (cycle_[h].stamp == cycle_stamp_ && cycle_[h].vertex != w) h = (h + 1) & 63;
       if (cycle_[h].stamp != cycle_stamp_) {
@@ -185,8 +188,8 @@ class Restar {
         return false;
       }
       const std::uint32_t next = cycle_[h].value;
-      m.link(Mesh<D>::encode(ids_[r], (slot + 1) % 3),
-             Mesh<D>::encode(ids_[next], (records[next].slot + 2) % 3));
+      m.link(Mesh<D>::encode(ids_[r], kAfter[slot]),
+             Mesh<D>::encode(ids_[next], kBefore[records[next].slot]));
     }
     return true;
   }

@@ -97,13 +97,12 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
 // Record r's edge then ends where record r+1's begins, which lets
 // Restar<2>::star link the new triangles without a table.  Edge f of a
 // counterclockwise triangle (v0, v1, v2) joins v[f+1] to v[f+2], so the edge
-// after f is f+1 (mod 3).  The stack holds the cavity edges still to cross,
+// after f is f+1 (mod 3, kAfter).  The stack holds the cavity edges still to cross,
 // as neighbour codes (4s + f), the next one on top.
 template <class K>
 void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_t i, std::uint32_t start,
                        std::uint32_t in, std::uint32_t out, std::vector<std::uint32_t>& cavity,
                        std::vector<BoundaryRecord<2>>& records, std::vector<std::uint32_t>& edges) {
-  static constexpr std::uint32_t after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
   const Point<2>& p = pts[i];
   NoGuard guard;
   cavity.clear();
@@ -124,8 +123,8 @@ void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_
         m.set_mark(t, in);
         cavity.push_back(t);
         const int j = Mesh<2>::facet_of(enc);
-        edges.push_back(Mesh<2>::encode(t, before[j]));  // crossed second
-        edges.push_back(Mesh<2>::encode(t, after[j]));   // crossed first
+        edges.push_back(Mesh<2>::encode(t, kBefore[j]));  // crossed second
+        edges.push_back(Mesh<2>::encode(t, kAfter[j]));   // crossed first
         continue;
       }
       m.set_mark(t, out);
