@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <cstring>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 #if defined(__linux__)
@@ -48,6 +49,12 @@ namespace dlab {
 inline constexpr std::uint32_t kGhost = 0xFFFFFFFFu;  // the vertex at infinity
 inline constexpr std::uint32_t kDead = 0xFFFFFFFEu;   // vertex(s,0) of a deleted slot
 inline constexpr std::uint32_t kNoNeighbour = 0xFFFFFFFFu;
+
+// Thrown when a mesh would need more slots than its 32-bit neighbour codes
+// (4t + j) can name: a triangulation too large for dlab, not a failed run.
+struct MeshTooLarge : std::length_error {
+  using std::length_error::length_error;
+};
 
 // Where the mark words of a mesh are: mark(s) is base[s * stride].
 struct MarkWords {
@@ -83,6 +90,9 @@ class Mesh {
   static constexpr std::uint32_t simplex_of(std::uint32_t enc) { return enc >> 2; }
   static constexpr int facet_of(std::uint32_t enc) { return static_cast<int>(enc & 3u); }
   static constexpr std::uint32_t encode(std::uint32_t s, int f) { return s * 4 + static_cast<std::uint32_t>(f); }
+  // The most slots a mesh holds: encode(s, f) must fit 32 bits and differ from
+  // kNoNeighbour, so s < 2^30 - 1 (about 1.6e8 points in 3D, 5e8 in 2D).
+  static constexpr std::uint32_t kMaxSlots = (1u << 30) - 1;
 
   void clear() {
     d_.clear();
@@ -97,6 +107,8 @@ class Mesh {
   }
   // From now on mark(), set_mark() and marks() must not be called: 3D keeps
   // no mark array (its owner keeps stamps of its own: ByteMarks).
+  // A lower limit than kMaxSlots, so that tests reach it.
+  void limit_slots(std::uint32_t n) { max_slots_ = std::min(n, kMaxSlots); }
   void without_marks() {
     has_marks_ = false;
     std::vector<std::uint32_t>().swap(mark_);
@@ -264,19 +276,27 @@ class Mesh {
   static constexpr int S = D == 2 ? 8 : 2 * V;
   static constexpr bool kMarkInBlock = S > 2 * V;
   static constexpr int kMarkWord = 2 * V;  // its word in the block, when kMarkInBlock
-  // n new slots: unset neighbours, mark 0.
+  // n new slots: unset neighbours, mark 0.  Throws MeshTooLarge instead of
+  // letting the neighbour codes wrap.
   void grow(std::size_t n) {
     const std::uint32_t first = slots();
+    if (n > max_slots_ - first) [[unlikely]]
+      too_large(max_slots_);
     d_.resize(d_.size() + n * S, kNoNeighbour);
     if constexpr (kMarkInBlock)
       for (std::uint32_t s = first; s < slots(); ++s) d_[std::size_t(s) * S + kMarkWord] = 0;
     else if (has_marks_)
       mark_.resize(mark_.size() + n, 0);
   }
+  [[noreturn, gnu::cold, gnu::noinline]] static void too_large(std::uint32_t limit) {
+    throw MeshTooLarge("the triangulation needs more than " + std::to_string(limit) +
+                       " simplices, the most that 32-bit neighbour codes can name");
+  }
   static std::size_t nb_index(std::uint32_t enc) { return std::size_t(enc >> 2) * S + V + (enc & 3u); }
   std::vector<std::uint32_t, CacheAligned<std::uint32_t>> d_;
   std::vector<std::uint32_t> mark_;  // 3D's marks (2D: in the blocks)
   bool has_marks_ = true;            // 3D: false after without_marks()
+  std::uint32_t max_slots_ = kMaxSlots;
   std::vector<std::uint32_t> free_;
   std::uint32_t live_ = 0;
 };

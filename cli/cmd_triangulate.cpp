@@ -14,6 +14,7 @@
 #include <memory>
 #include <utility>
 
+#include "algorithms/mesh.hpp"
 #include "cli/cli_app.hpp"
 #include "cli/commands.hpp"
 #include "cli/kernels.hpp"
@@ -136,6 +137,8 @@ int cmd_triangulate(int argc, char** argv) {
     res = run(std::move(points), opt);
   } catch (const UsageError& e) {
     return cl.usage_error(e.what());
+  } catch (const MeshTooLarge& e) {  // dlab's limit, not the algorithm's failure
+    return cl.usage_error(input + ": " + std::to_string(input_points) + " points: " + e.what());
   } catch (const std::exception& e) {  // an algorithm that throws has failed, not crashed
     res = RunResult{};
     res.dimension = points.dimension;

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -107,4 +108,36 @@ TEST_CASE("mesh: without marks, 3D holds its blocks only", "[mesh]") {
   with_marks.reserve(1000);
   with_marks.add_reserve(1500);
   CHECK(m.bytes_reserved() * 36 == with_marks.bytes_reserved() * 32);
+}
+
+// The 32-bit neighbour codes 4t + j name slots below 2^30 - 1 only (the last
+// code, of slot 2^30 - 1, would be kNoNeighbour; slot 2^30 would wrap to 0).
+TEST_CASE("mesh: kMaxSlots is the most slots the neighbour codes name", "[mesh]") {
+  using M = Mesh<3>;
+  const std::uint32_t last = M::kMaxSlots - 1;
+  for (int f = 0; f < 4; ++f) {
+    CHECK(M::encode(last, f) != kNoNeighbour);
+    CHECK(M::simplex_of(M::encode(last, f)) == last);
+    CHECK(M::facet_of(M::encode(last, f)) == f);
+  }
+  CHECK(M::encode(M::kMaxSlots, 3) == kNoNeighbour);  // one slot more is one too many
+  CHECK(Mesh<2>::kMaxSlots == M::kMaxSlots);
+}
+
+TEST_CASE("mesh: growing past the slot limit throws instead of wrapping", "[mesh]") {
+  Mesh<3> m;
+  m.limit_slots(6);
+  const std::array<std::uint32_t, 4> v{0, 1, 2, 3};
+  for (int i = 0; i < 6; ++i) m.create(v);
+  CHECK_THROWS_AS(m.create(v), MeshTooLarge);
+  CHECK(m.slots() == 6);
+  CHECK(m.live() == 6);
+  m.destroy(2);
+  CHECK(m.create(v) == 2);  // a freed slot is reused, not a new one
+  CHECK_THROWS_AS(m.add_reserve(1), MeshTooLarge);
+  Mesh<2> t;
+  t.limit_slots(4);
+  CHECK(t.add_reserve(4) == 0);
+  CHECK_THROWS_AS(t.add_reserve(1), MeshTooLarge);
+  CHECK(t.slots() == 4);
 }
