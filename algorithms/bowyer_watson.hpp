@@ -83,11 +83,11 @@ class BowyerWatson {
   std::vector<BoundaryRecord<D>> records_;
   std::vector<std::uint32_t> ccw_edges_;  // search_cavity_ccw's stack
   std::uint32_t last_ = 0;   // where the next walk starts
-  std::uint32_t stamp_ = 0;  // cavity stamp: stamp_ = in, stamp_ + 1 = out
-  // Where the stamps live: 3D in a byte per slot of their own (the mesh has
-  // no 4-byte mark array: 20 bytes per point less), 2D in the mesh's blocks
-  // (free).
-  std::conditional_t<D == 3, ByteMarks, NoGuard> stamps_;
+  std::uint32_t stamp_ = 0;  // 2D cavity stamp: stamp_ = in, stamp_ + 1 = out
+  // Where the stamps live: 3D in the top bits of neighbour words (the mesh
+  // has no mark array: 27 bytes per point less; at most 2^29 slots), 2D
+  // in the mesh's blocks (free).
+  std::conditional_t<D == 3, TopBitMarks, NoGuard> stamps_;
   WalkRng rng_;
   LocationScheme location_ = LocationScheme::walk;
   std::string message_;
@@ -138,10 +138,7 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
   }
 
   // Cavity search (algorithms/cavity_search.hpp).
-  if constexpr (D == 3) {
-    stamp_ = 1;
-    stamps_.cover(mesh_.slots());
-  } else {
+  if constexpr (D == 2) {
     if (stamp_ >= 0xFFFFFFF0u) {
       for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
       stamp_ = 0;
@@ -150,11 +147,13 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
   }
   if constexpr (D == 2 && K::exact)  // records in cycle order: Restar links them without a table
     search_cavity_ccw<K>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, ccw_edges_);
-  else
+  else if constexpr (D == 2)
     search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stamps_);
-  if constexpr (D == 3) {  // what the search marked: the cavity and its outside neighbours
-    for (std::uint32_t s : cavity_) stamps_.unmark(s);
-    for (const BoundaryRecord<D>& r : records_) stamps_.unmark(Mesh<D>::simplex_of(r.outside));
+  else {  // what the search marked: the cavity (in) and its outside neighbours (out)
+    constexpr std::uint32_t in = TopBitMarks::kIn, out = TopBitMarks::kOut;
+    search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, in, out, cavity_, records_, stamps_);
+    for (std::uint32_t s : cavity_) stamps_.unmark(mesh_, s, in);
+    for (const BoundaryRecord<D>& r : records_) stamps_.unmark(mesh_, Mesh<D>::simplex_of(r.outside), out);
   }
   cavity_total_ += cavity_.size();
   cavity_max_ = std::max<std::uint64_t>(cavity_max_, cavity_.size());
@@ -185,13 +184,12 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
-  if constexpr (D == 3) mesh_.without_marks();
+  if constexpr (D == 3) {
+    mesh_.without_marks();
+    mesh_.limit_slots(TopBitMarks::kMaxSlots);
+  }
   const std::optional<IncrementalStart<D>> start = start_incremental_mesh<D>(k_, pts, mesh_, res);
   if (!start) return res;
-  if constexpr (D == 3) {
-    stamps_ = ByteMarks();
-    stamps_.reserve(mesh_.capacity());
-  }
   last_ = start->simplex;
   merged_.start(n, start->ids);
 

@@ -13,7 +13,8 @@
 // star-shaped from p.
 //
 // Every simplex read is first acquired from the guard
-// (algorithms/simplex_guard.hpp), which also keeps the stamps; a refusal ends
+// (algorithms/simplex_guard.hpp), which also keeps the stamps (and may keep
+// them in neighbour words: those are read through guard.code); a refusal ends
 // the search with false and leaves the mesh unchanged but for the stamps of
 // acquired simplices.
 #pragma once
@@ -41,7 +42,7 @@ Conflict in_conflict(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uin
       c = inside_pos(k, pts[w[0]], pts[w[1]], pts[w[2]], p) == Sign::positive;
   } else {
     if (w[3] == kGhost) {
-      const std::uint32_t enc = m.neighbour(t, 3);
+      const std::uint32_t enc = guard.code(m.neighbour(t, 3));
       if (!guard.acquire(Mesh<3>::simplex_of(enc))) return Conflict::refused;
       const std::uint32_t d = m.vertex(Mesh<3>::simplex_of(enc), Mesh<3>::facet_of(enc));
       c = ghost_conflict(k, pts[w[0]], pts[w[1]], pts[w[2]], pts[d], p);
@@ -67,7 +68,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
   for (std::size_t c = 0; c < cavity.size(); ++c) {
     const std::uint32_t s = cavity[c];
     for (int f = 0; f < V; ++f) {
-      const std::uint32_t enc = m.neighbour(s, f);
+      const std::uint32_t enc = guard.code(m.neighbour(s, f));
       const std::uint32_t t = Mesh<D>::simplex_of(enc);
       if (!guard.acquire(t)) return false;
       const std::uint32_t mk = guard.mark(m, t);

@@ -27,7 +27,8 @@
 //    visited flags): bump a counter instead of clearing sets. 2D keeps it in
 //    the block's first padding word (no array of its own, and the same cache
 //    line as the simplex), 3D in an array beside the blocks, unless the owner
-//    keeps its stamps elsewhere (without_marks: no array at all).
+//    keeps its stamps elsewhere (without_marks: no array at all; the serial
+//    3D Bowyer–Watson's TopBitMarks, algorithms/simplex_guard.hpp).
 // The mesh never sees a coordinate: algorithms ask predicates on vertex ids.
 #pragma once
 #include <algorithm>
@@ -106,9 +107,10 @@ class Mesh {
       if (has_marks_) mark_.reserve(simplices);
   }
   // From now on mark(), set_mark() and marks() must not be called: 3D keeps
-  // no mark array (its owner keeps stamps of its own: ByteMarks).
-  // A lower limit than kMaxSlots, so that tests reach it.
+  // no mark array (its owner keeps stamps of its own: TopBitMarks).
+  // A lower limit than kMaxSlots: an owner's (TopBitMarks'), or a test's.
   void limit_slots(std::uint32_t n) { max_slots_ = std::min(n, kMaxSlots); }
+  std::uint32_t max_slots() const { return max_slots_; }
   void without_marks() {
     has_marks_ = false;
     std::vector<std::uint32_t>().swap(mark_);
@@ -290,7 +292,7 @@ class Mesh {
   }
   [[noreturn, gnu::cold, gnu::noinline]] static void too_large(std::uint32_t limit) {
     throw MeshTooLarge("the triangulation needs more than " + std::to_string(limit) +
-                       " simplices, the most that 32-bit neighbour codes can name");
+                       " simplex slots, the most this algorithm's 32-bit neighbour codes can name");
   }
   static std::size_t nb_index(std::uint32_t enc) { return std::size_t(enc >> 2) * S + V + (enc & 3u); }
   std::vector<std::uint32_t, CacheAligned<std::uint32_t>> d_;

@@ -6,13 +6,16 @@
 //
 //  - NoGuard: one thread owns the whole mesh; never refuses (compiles away);
 //    stamps are Mesh::mark.
-//  - ByteMarks: one thread owns the whole mesh, as with NoGuard, but a
-//    search's marks are one byte per slot in an array of the guard's own,
-//    and the owner sets each back to 0 after the search (unmark: the cavity
-//    and the simplices across its boundary are all it marked) instead of
-//    bumping a stamp.  The serial 3D Bowyer–Watson's: its mesh then keeps no
-//    4-byte mark array (27 -> 6.75 bytes per point; session 19 measured a hash
-//    table of stamps instead, at 9 % more instructions).
+//  - TopBitMarks: one thread owns the whole 3D mesh, as with NoGuard, and a
+//    search's two marks are the top bits of the simplex's own neighbour words
+//    0 ("in") and 1 ("out"), which neighbour codes leave free below its slot
+//    limit (kMaxSlots = 2^29: every code 4t + j < 2^31).  The search reads
+//    neighbour words through code(), which clears that bit, and the owner
+//    clears both bits of every simplex the search marked (unmark: the cavity
+//    and the simplices across its boundary) before anything else reads the
+//    mesh.  The serial 3D Bowyer–Watson's: no mark array at all (session 19's
+//    byte per slot cost 6.75 bytes per point; a 4-byte stamp 27), and a mark
+//    is read from the cache line the simplex's vertices are on.
 //  - LockGuard: the parallel Bowyer–Watson's (algorithms/parallel_bowyer_watson.hpp)
 //    per-simplex locks, kept in the mesh's mark word itself: its top 8 bits
 //    hold 0 (free) or the owner's id (1..255), its low 24 bits the stamp, so
@@ -40,6 +43,8 @@ namespace dlab {
 struct NoGuard {
   static constexpr bool acquire(std::uint32_t) { return true; }
   static constexpr void release_all() {}
+  // The neighbour code in a neighbour word (TopBitMarks keeps a bit there).
+  static constexpr std::uint32_t code(std::uint32_t word) { return word; }
   template <class M>
   static std::uint32_t mark(const M& m, std::uint32_t s) {
     return m.mark(s);
@@ -50,39 +55,41 @@ struct NoGuard {
   }
 };
 
-class ByteMarks {
+class TopBitMarks {
  public:
+  static constexpr std::uint32_t kMaxSlots = 1u << 29;
+  static constexpr std::uint32_t kBit = 1u << 31;
+  static_assert(Mesh<3>::encode(kMaxSlots - 1, 3) < kBit, "codes below the slot limit leave the top bit free");
+
   static constexpr bool acquire(std::uint32_t) { return true; }
   static constexpr void release_all() {}
+  static constexpr std::uint32_t code(std::uint32_t word) { return word & ~kBit; }
 
-  void reserve(std::size_t slots) { marks_.reserve(slots); }
-  // Slots below `slots` can be marked (new ones read 0); call before a search.
-  void cover(std::size_t slots) {
-    if (marks_.size() < slots) marks_.resize(slots, Mark{});
+  // The stamps: kIn is the top bit of neighbour word 0, kOut of word 1; a
+  // simplex has at most one of them, so 0, kIn or kOut.
+  static constexpr std::uint32_t kIn = 1, kOut = 2;
+  static std::uint32_t mark(const Mesh<3>& m, std::uint32_t s) {
+    if (m.neighbour(s, 0) & kBit) return kIn;
+    return m.neighbour(s, 1) & kBit ? kOut : 0;
   }
-  template <class M>
-  std::uint32_t mark(const M&, std::uint32_t s) const {
-    return static_cast<std::uint32_t>(marks_[s]);
+  // On an unmarked simplex; stamp kIn or kOut.
+  static void set_mark(Mesh<3>& m, std::uint32_t s, std::uint32_t stamp) {
+    const std::uint32_t word = Mesh<3>::encode(s, static_cast<int>(stamp) - 1);
+    m.set_neighbour(word, m.neighbour_enc(word) | kBit);
   }
-  // stamp < 256.
-  template <class M>
-  void set_mark(M&, std::uint32_t s, std::uint32_t stamp) {
-    marks_[s] = static_cast<Mark>(stamp);
+  // Unmarked again (stamp: the one set), its neighbour codes as they were.
+  static void unmark(Mesh<3>& m, std::uint32_t s, std::uint32_t stamp) {
+    const std::uint32_t word = Mesh<3>::encode(s, static_cast<int>(stamp) - 1);
+    m.set_neighbour(word, code(m.neighbour_enc(word)));
   }
-  // Back to 0: the owner unmarks every simplex a search marked.
-  void unmark(std::uint32_t s) { marks_[s] = Mark{}; }
-
- private:
-  // A byte that is not a character type: a store to a std::uint8_t may alias
-  // any object, so the search would reload its pointers after every mark.
-  enum class Mark : std::uint8_t {};
-  std::vector<Mark> marks_;
 };
 
 class LockGuard {
  public:
   static constexpr int kOwnerShift = 24;
   static constexpr std::uint32_t kStampLimit = (1u << kOwnerShift) - 1;
+
+  static constexpr std::uint32_t code(std::uint32_t word) { return word; }
 
   LockGuard(MarkWords marks, std::uint8_t owner) : words_(marks), owner_(std::uint32_t(owner) << kOwnerShift) {}
 

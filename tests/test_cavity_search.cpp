@@ -95,3 +95,65 @@ TEST_CASE("cavity search 2D: depth first gives the breadth-first cavity, its bou
   CHECK(outside < extra.size() - 20);
   CHECK(largest >= 6);
 }
+
+// 3D, the serial Bowyer–Watson's TopBitMarks (algorithms/simplex_guard.hpp):
+// marks in the top bits of neighbour words give the cavity and the boundary
+// records of stamps in the mesh's mark array, the records' neighbour codes
+// carry no mark bit, and unmarking what the search marked restores every word.
+TEST_CASE("cavity search 3D: marks in the neighbour words' top bits give the stamps' cavity", "[cavity_search]") {
+  const std::size_t n = 2000;
+  std::vector<Point<3>> pts = gen::uniform<3>(n, 21);
+  Lawson<K, 3> dt;
+  REQUIRE(dt.run(std::span<const Point<3>>(pts)).outcome == RunResult::Outcome::ok);
+  Mesh<3> m = dt.mesh();
+  auto words = [](const Mesh<3>& mesh) {
+    std::vector<std::uint32_t> w;
+    for (std::uint32_t s = 0; s < mesh.slots(); ++s)
+      if (mesh.alive(s))
+        for (int j = 0; j < 4; ++j) w.insert(w.end(), {mesh.vertex(s, j), mesh.neighbour(s, j)});
+    return w;
+  };
+  const std::vector<std::uint32_t> before = words(m);
+  const K k;
+  const std::vector<Point<3>> extra = gen::uniform<3>(300, 22);
+  pts.push_back({0, 0, 0});
+  const std::uint32_t i = static_cast<std::uint32_t>(n);
+  std::uint32_t stamp = 0x40000000u;
+  std::vector<std::uint32_t> cavity_stamped, cavity_bits;
+  std::vector<BoundaryRecord<3>> records_stamped, records_bits;
+  WalkRng rng;
+  std::uint32_t start = 0;
+  while (!m.alive(start)) ++start;
+  std::size_t outside = 0, marked_out = 0;
+  for (const Point<3>& q : extra) {
+    pts[i] = {q[0] * 1.4 - 0.2, q[1] * 1.4 - 0.2, q[2] * 1.4 - 0.2};
+    const Located loc = visibility_walk<K, 3>(k, m, pts.data(), start, pts[i], 1u << 20, rng);
+    REQUIRE((loc.end == Located::End::inside || loc.end == Located::End::outside));
+    outside += loc.end == Located::End::outside;
+    stamp += 4;
+    NoGuard stamps;
+    REQUIRE(search_cavity<K, 3>(k, m, pts.data(), i, loc.simplex, stamp, stamp + 1, cavity_stamped,
+                                records_stamped, stamps));
+    TopBitMarks bits;
+    REQUIRE(search_cavity<K, 3>(k, m, pts.data(), i, loc.simplex, TopBitMarks::kIn, TopBitMarks::kOut,
+                                cavity_bits, records_bits, bits));
+    REQUIRE(cavity_bits == cavity_stamped);
+    REQUIRE(records_bits.size() == records_stamped.size());
+    for (std::size_t r = 0; r < records_bits.size(); ++r) {
+      REQUIRE(records_bits[r].v == records_stamped[r].v);
+      REQUIRE(records_bits[r].outside == records_stamped[r].outside);
+      REQUIRE(records_bits[r].slot == records_stamped[r].slot);
+    }
+    for (std::uint32_t s : cavity_bits) REQUIRE(TopBitMarks::mark(m, s) == TopBitMarks::kIn);
+    for (const BoundaryRecord<3>& r : records_bits) {
+      REQUIRE(TopBitMarks::mark(m, Mesh<3>::simplex_of(r.outside)) == TopBitMarks::kOut);
+      ++marked_out;
+    }
+    for (std::uint32_t s : cavity_bits) TopBitMarks::unmark(m, s, TopBitMarks::kIn);
+    for (const BoundaryRecord<3>& r : records_bits) TopBitMarks::unmark(m, Mesh<3>::simplex_of(r.outside), TopBitMarks::kOut);
+    REQUIRE(words(m) == before);
+  }
+  CHECK(outside > 10);
+  CHECK(outside < extra.size() - 10);
+  CHECK(marked_out > 10 * extra.size());
+}

@@ -11,7 +11,9 @@
 #include <span>
 #include <vector>
 
+#include "algorithms/bowyer_watson.hpp"
 #include "algorithms/lawson.hpp"
+#include "algorithms/simplex_guard.hpp"
 #include "fuzz/generators.hpp"
 #include "predicates/adaptive_kernel.hpp"
 #include "predicates/perturbed.hpp"
@@ -140,4 +142,21 @@ TEST_CASE("mesh: growing past the slot limit throws instead of wrapping", "[mesh
   CHECK(t.add_reserve(4) == 0);
   CHECK_THROWS_AS(t.add_reserve(1), MeshTooLarge);
   CHECK(t.slots() == 4);
+}
+
+// The serial 3D Bowyer–Watson keeps its marks in the neighbour codes' top bit
+// (TopBitMarks), so its mesh must stop below 2^29 slots; 2D's and Lawson's go on
+// to the codes' own limit.
+TEST_CASE("mesh: the serial 3D Bowyer-Watson's mesh stops where its marks need", "[mesh]") {
+  BowyerWatson<perturbed<AdaptiveKernel>, 3> bw3;
+  const std::vector<Point<3>> p3 = gen::uniform<3>(50, 3);
+  REQUIRE(bw3.run(std::span<const Point<3>>(p3)).outcome == RunResult::Outcome::ok);
+  CHECK(bw3.mesh().max_slots() == TopBitMarks::kMaxSlots);
+  CHECK(Mesh<3>::encode(TopBitMarks::kMaxSlots - 1, 3) < TopBitMarks::kBit);
+  CHECK(Mesh<3>::encode(TopBitMarks::kMaxSlots, 0) >= TopBitMarks::kBit);  // one slot more would collide
+  BowyerWatson<perturbed<AdaptiveKernel>, 2> bw2;
+  const std::vector<Point<2>> p2 = gen::uniform<2>(50, 3);
+  REQUIRE(bw2.run(std::span<const Point<2>>(p2)).outcome == RunResult::Outcome::ok);
+  CHECK(bw2.mesh().max_slots() == Mesh<2>::kMaxSlots);
+  CHECK(triangulated_mesh<3>(50).max_slots() == Mesh<3>::kMaxSlots);
 }
