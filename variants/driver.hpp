@@ -44,6 +44,7 @@
 #include "predicates/perturbed.hpp"
 #include "variants/canonical_order.hpp"
 #include "variants/insertion_order.hpp"
+#include "variants/packed_indices.hpp"
 #include "variants/run.hpp"
 
 
@@ -84,23 +85,35 @@ std::size_t count_distinct(std::vector<Point<D>> pts) {
 }
 
 // Keeps a point vector in insertion order while it lives (apply_order), and
-// puts it back as it was when it goes, also when the run throws (in place if
-// memory is short then). The vector holds one copy of the points during the
-// run; the second, while it is reordered, comes before the mesh exists.
+// puts it back as it was when it goes (or at restore()), also when the run
+// throws (in place if memory is short then). The vector holds one copy of the
+// points during the run; the second, while it is reordered, comes before the
+// mesh exists. The order itself is kept packed (PackedIndices: 20 bits per
+// point at 10^6 instead of 32), since it lives through the mesh's peak.
 template <int D>
 class InInsertionOrder {
  public:
-  InInsertionOrder(std::vector<Point<D>>& pts, std::span<const std::uint32_t> order) : pts_(pts), order_(order) {
-    apply_order(pts_, order_, false, done_);
+  InInsertionOrder(std::vector<Point<D>>& pts, const std::vector<std::uint32_t>& order)
+      : pts_(pts), order_(order, pts.size()) {  // packed first: a bad_alloc leaves pts as they were
+    apply_order(pts_, order, false, done_);
   }
-  ~InInsertionOrder() { apply_order(pts_, order_, true, done_); }
+  ~InInsertionOrder() { restore(); }
   InInsertionOrder(const InInsertionOrder&) = delete;
   InInsertionOrder& operator=(const InInsertionOrder&) = delete;
 
+  void restore() {
+    if (restored_) return;
+    restored_ = true;
+    apply_order(pts_, order_, true, done_);
+  }
+  // Position i holds the input index of the point inserted i-th.
+  const PackedIndices& order() const { return order_; }
+
  private:
   std::vector<Point<D>>& pts_;
-  std::span<const std::uint32_t> order_;
+  PackedIndices order_;
   std::vector<bool> done_;
+  bool restored_ = false;
 };
 
 // The heap's free pages go back to the system before a run, whose peak is
@@ -122,18 +135,16 @@ template <template <class, int> class Algo, class K, int D>
 void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, RunResult& r) {
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
-  const std::vector<std::uint32_t> order =
-      insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads);
+  InInsertionOrder<D> in_order(
+      pts, insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads));
+  const PackedIndices& order = in_order.order();
 
   Algo<K, D> algo(k);
   if constexpr (HasLocationScheme<Algo<K, D>>) algo.set_location(location_scheme(o.location));
   if constexpr (HasThreads<Algo<K, D>>) algo.set_threads(o.threads);
-  TriangulationResult t;
-  {
-    const InInsertionOrder<D> in_order(pts, order);
-    release_free_heap(pts.size());
-    t = algo.run(std::span<const Point<D>>(pts));
-  }
+  release_free_heap(pts.size());
+  TriangulationResult t = algo.run(std::span<const Point<D>>(pts));
+  in_order.restore();
 
   r.outcome = t.outcome;
   r.message = std::move(t.message);

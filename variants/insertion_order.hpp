@@ -39,14 +39,13 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point3> pts, Insertio
                                            std::uint64_t seed, unsigned threads = 1);
 
 // Puts `v` in insertion order: v[i] becomes the old v[order[i]] (order from
-// insertion_order); with `back`, undoes it. Out of place when memory allows
+// insertion_order, or anything indexed so: PackedIndices); with `back`, undoes it. Out of place when memory allows
 // (independent loads and stores, many cache misses in flight); otherwise, or
 // with `in_place`, along the permutation's cycles, whose chained misses made it
 // 3x slower than the run's own ordering work on 10^6 points, but which needs
 // only `done` (one bit per element; allocates nothing once it has v's size).
-template <class T>
-void apply_order(std::vector<T>& v, std::span<const std::uint32_t> order, bool back, std::vector<bool>& done,
-                 bool in_place = false) {
+template <class T, class Order>
+void apply_order(std::vector<T>& v, const Order& order, bool back, std::vector<bool>& done, bool in_place = false) {
   if (!in_place) {
     try {
       std::vector<T> out(v.size());
