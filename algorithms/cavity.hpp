@@ -221,12 +221,17 @@ class Restar {
   // local ids (<= 32, else fall back to hashing; a 128-entry table vertex ->
   // id, load <= 36/128, instead of a word per vertex of the mesh, which would
   // add 4 to 6 bytes per point to the peak memory); each internal facet
-  // (p, a, b) of a new tetrahedron is written at table[a][b], with (a, b)
-  // ordered so that the tetrahedron's own remaining vertex is on the positive
-  // side of the oriented facet; the tetrahedron across it sees the facet
-  // reversed, so its partner is read at table[b][a]: no search, no branch
-  // on the data.  The stamp catches a partner that was never written.
-  // Returns false with an empty error when the cavity is too large.
+  // (p, a, b) of a new tetrahedron is keyed by (a, b), ordered so that the
+  // tetrahedron's own remaining vertex is on the positive side of the
+  // oriented facet; the tetrahedron across it sees the facet reversed, (b, a).
+  // One pass: a facet whose partner is waiting at table[b][a] is linked to it
+  // (both ways) and the entry is marked paired; otherwise it waits at
+  // table[a][b].  So every key (a, b) must be used once each way: a facet
+  // that finds its partner already paired or its own place taken (a facet of
+  // more than two new simplices), or one left waiting at the end (no
+  // partner), is an error, also for inexact kernels, whose links are then
+  // mutual whatever their cavity was.  Returns false with an empty error when
+  // the cavity is too large.
   template <class M>
   bool link_local(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
     if (++local_stamp_ == 0) {  // wrapped: clear once every 2^32 uses
@@ -242,42 +247,40 @@ class Restar {
       if (local_[h].stamp != local_stamp_) local_[h] = {v, count++, local_stamp_};
       return local_[h].value;
     };
-    // Local ids of each record's vertices (p's entry unused).
-    lv_.resize(records.size() * 4);
-    std::uint32_t* const lv = lv_.data();
+    std::uint32_t waiting = 0;
     for (std::size_t r = 0; r < records.size(); ++r) {
-      for (int i = 0; i < 4; ++i) lv[r * 4 + i] = i == records[r].slot ? 0u : local(records[r].v[i]);
+      const int slot = records[r].slot;
+      std::uint32_t lv[4];  // local ids of the record's vertices (p's unused)
+      for (int i = 0; i < 4; ++i) lv[i] = i == slot ? 0u : local(records[r].v[i]);
       if (count > 32) return false;
-    }
-    // The facet opposite slot f, its slots in increasing order, is oriented
-    // with vertex f on its positive side when f is even (moving slot f to the
-    // front of a positive simplex takes f transpositions); reverse it when f
-    // is odd.  Rotated to start at p, it reads (p, a, b).
-    auto edge = [&](std::size_t r, int f, std::uint32_t& a, std::uint32_t& b) {
-      const auto& e = kEdge[records[r].slot][f];
-      a = lv[r * 4 + e[0]];
-      b = lv[r * 4 + e[1]];
-    };
-    // Write every internal facet at [a][b], then read partners at [b][a].
-    for (std::size_t r = 0; r < records.size(); ++r)
+      // The facet opposite slot f, its slots in increasing order, is oriented
+      // with vertex f on its positive side when f is even (moving slot f to
+      // the front of a positive simplex takes f transpositions); reverse it
+      // when f is odd.  Rotated to start at p, it reads (p, a, b): kEdge.
       for (int f = 0; f < 4; ++f) {
-        if (f == records[r].slot) continue;
-        std::uint32_t a, b;
-        edge(r, f, a, b);
-        pair_[a * 32 + b] = {Mesh<D>::encode(ids_[r], f), local_stamp_};
-      }
-    for (std::size_t r = 0; r < records.size(); ++r)
-      for (int f = 0; f < 4; ++f) {
-        if (f == records[r].slot) continue;
-        std::uint32_t a, b;
-        edge(r, f, a, b);
-        const PairEntry& e = pair_[b * 32 + a];
-        if (e.stamp != local_stamp_) {
-          error = "cavity boundary is not closed (a new facet without a partner)";
+        if (f == slot) continue;
+        const std::uint32_t a = lv[kEdge[slot][f][0]], b = lv[kEdge[slot][f][1]];
+        const std::uint32_t enc = Mesh<D>::encode(ids_[r], f);
+        PairEntry& partner = pair_[b * 32 + a];
+        if (partner.stamp == local_stamp_ && partner.value != kPaired) {
+          m.link(enc, partner.value);
+          partner.value = kPaired;
+          --waiting;
+          continue;
+        }
+        PairEntry& own = pair_[a * 32 + b];
+        if (partner.stamp == local_stamp_ || own.stamp == local_stamp_) {
+          error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
           return false;
         }
-        m.set_neighbour(Mesh<D>::encode(ids_[r], f), e.value);
+        own = {enc, local_stamp_};
+        ++waiting;
       }
+    }
+    if (waiting != 0) {
+      error = "cavity boundary is not closed (a new facet without a partner)";
+      return false;
+    }
     return true;
   }
 
@@ -362,7 +365,6 @@ class Restar {
     std::uint32_t value = 0, stamp = 0;
   };
   std::array<PairEntry, 32 * 32> pair_{};
-  std::vector<std::uint32_t> lv_;   // local ids of the records' vertices
   std::uint32_t local_stamp_ = 0;
   std::uint32_t cycle_stamp_ = 0;
   std::uint32_t stamp_ = 0;
