@@ -108,13 +108,13 @@ class Mesh {
   }
   // From now on mark(), set_mark() and marks() must not be called: 3D keeps
   // no mark array (its owner keeps stamps of its own: TopBitMarks).
-  // A lower limit than kMaxSlots: an owner's (TopBitMarks'), or a test's.
-  void limit_slots(std::uint32_t n) { max_slots_ = std::min(n, kMaxSlots); }
-  std::uint32_t max_slots() const { return max_slots_; }
   void without_marks() {
     has_marks_ = false;
     std::vector<std::uint32_t>().swap(mark_);
   }
+  // A lower limit than kMaxSlots: an owner's (TopBitMarks'), or a test's.
+  void limit_slots(std::uint32_t n) { max_slots_ = std::min(n, kMaxSlots); }
+  std::uint32_t max_slots() const { return max_slots_; }
 
   // Slots the reserve holds without a reallocation.
   std::size_t capacity() const { return d_.capacity() / S; }

@@ -11,7 +11,7 @@
 //    0 ("in") and 1 ("out"), which neighbour codes leave free below its slot
 //    limit (kMaxSlots = 2^29: every code 4t + j < 2^31).  The search reads
 //    neighbour words through code(), which clears that bit, and the owner
-//    clears both bits of every simplex the search marked (unmark: the cavity
+//    clears the bit of every simplex the search marked (unmark: the cavity
 //    and the simplices across its boundary) before anything else reads the
 //    mesh.  The serial 3D Bowyer–Watson's: no mark array at all (session 19's
 //    byte per slot cost 6.75 bytes per point; a 4-byte stamp 27), and a mark
