@@ -270,6 +270,93 @@ inline DetBound orient3d_filter(const Point3& a, const Point3& b, const Point3& 
   return {f.det, f.bound()};
 }
 
+// The insphere lift filter's determinant and bound (error_bounds.md 3.2), over the
+// differences to e:
+//   2x2 minors  ab = aex bey - bex aey, bc, cd, da, ac, bd (the same pattern),
+//   3x3 minors  abc = (aez bc - bez ac) + cez ab,   bcd = (bez cd - cez bd) + dez bc,
+//               cda = (cez da + dez ac) + aez cd,   dab = (dez ab + aez bd) + bez da,
+//   lifts       alift = (aex^2 + aey^2) + aez^2, ...,
+//   det = (dlift abc - clift dab) + (blift cda - alift bcd),
+//   bound = is_lift128 (((128 L') L') mz'),  L' = max(largest lift, is_lo^2),
+//           mz' = max(largest |z difference|, is_lo);
+// 128 L' first, so that an overflow anywhere in det makes the bound +inf. As for
+// orient3d, two evaluations with the same operations on the same operands (bit for
+// bit the same det and bound; tests/test_adaptive_kernel.cpp checks it): plain
+// doubles, and SSE2 with points a and c in one pair of lanes, b and d in the other.
+inline DetBound insphere_filter_scalar(const Point3& a, const Point3& b, const Point3& c,
+                                       const Point3& d, const Point3& e) {
+  const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+  const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+  const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+  const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+  const double ab = aex * bey - bex * aey;
+  const double bc = bex * cey - cex * bey;
+  const double cd = cex * dey - dex * cey;
+  const double da = dex * aey - aex * dey;
+  const double ac = aex * cey - cex * aey;
+  const double bd = bex * dey - dex * bey;
+  const double abc = (aez * bc - bez * ac) + cez * ab;
+  const double bcd = (bez * cd - cez * bd) + dez * bc;
+  const double cda = (cez * da + dez * ac) + aez * cd;
+  const double dab = (dez * ab + aez * bd) + bez * da;
+  const double alift = (aex * aex + aey * aey) + aez * aez;
+  const double blift = (bex * bex + bey * bey) + bez * bez;
+  const double clift = (cex * cex + cey * cey) + cez * cez;
+  const double dlift = (dex * dex + dey * dey) + dez * dez;
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  using std::fabs, std::max;
+  const double L = max(max(max(alift, blift), max(clift, dlift)), is_lo2);
+  const double mz = max(max(max(fabs(aez), fabs(bez)), max(fabs(cez), fabs(dez))), is_lo);
+  return {det, is_lift128 * (((L * 128) * L) * mz)};
+}
+#if defined(__SSE2__)
+// Lanes (x, y) -> (x, -y): negating is exact, and u + v = u - (-v) bit for bit.
+inline __m128d negate_high(__m128d v) { return _mm_xor_pd(v, _mm_set_pd(-0.0, 0.0)); }
+inline DetBound insphere_filter_sse2(const Point3& a, const Point3& b, const Point3& c,
+                                     const Point3& d, const Point3& e) {
+  const __m128d exy = _mm_loadu_pd(e.data());
+  const __m128d axy = _mm_sub_pd(_mm_loadu_pd(a.data()), exy), bxy = _mm_sub_pd(_mm_loadu_pd(b.data()), exy),
+                cxy = _mm_sub_pd(_mm_loadu_pd(c.data()), exy), dxy = _mm_sub_pd(_mm_loadu_pd(d.data()), exy);
+  const __m128d ez = _mm_set1_pd(e[2]);
+  const __m128d x1 = _mm_unpacklo_pd(axy, cxy), y1 = _mm_unpackhi_pd(axy, cxy);  // (aex, cex), (aey, cey)
+  const __m128d x2 = _mm_unpacklo_pd(bxy, dxy), y2 = _mm_unpackhi_pd(bxy, dxy);  // (bex, dex), (bey, dey)
+  const __m128d z1 = _mm_sub_pd(_mm_set_pd(c[2], a[2]), ez);                      // (aez, cez)
+  const __m128d z2 = _mm_sub_pd(_mm_set_pd(d[2], b[2]), ez);                      // (bez, dez)
+  // 2x2 minors (IEEE products commute exactly).
+  const __m128d m_ab_cd = _mm_sub_pd(_mm_mul_pd(x1, y2), _mm_mul_pd(x2, y1));
+  const __m128d m_bc_da = _mm_sub_pd(_mm_mul_pd(x2, swap_lanes(y1)), _mm_mul_pd(swap_lanes(x1), y2));
+  const __m128d m_ac_bd = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(x1, x2), _mm_unpackhi_pd(y1, y2)),
+                                     _mm_mul_pd(_mm_unpackhi_pd(x1, x2), _mm_unpacklo_pd(y1, y2)));
+  // 3x3 minors (abc, cda) and (bcd, dab).
+  const __m128d acx2 = _mm_unpacklo_pd(m_ac_bd, m_ac_bd), bdx2 = _mm_unpackhi_pd(m_ac_bd, m_ac_bd);
+  const __m128d z1s = swap_lanes(z1), z2s = swap_lanes(z2);  // (cez, aez), (dez, bez)
+  const __m128d p = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(z1, m_bc_da), _mm_mul_pd(negate_high(z2), acx2)),
+                               _mm_mul_pd(z1s, m_ab_cd));
+  const __m128d q = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(z2, swap_lanes(m_ab_cd)), _mm_mul_pd(negate_high(z1s), bdx2)),
+                               _mm_mul_pd(z2s, m_bc_da));
+  // Lifts (alift, clift) and (blift, dlift); det's two halves in the two lanes.
+  const __m128d l1 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x1, x1), _mm_mul_pd(y1, y1)), _mm_mul_pd(z1, z1));
+  const __m128d l2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x2, x2), _mm_mul_pd(y2, y2)), _mm_mul_pd(z2, z2));
+  const __m128d r = _mm_sub_pd(_mm_mul_pd(swap_lanes(l2), p), swap_lanes(_mm_mul_pd(l1, q)));
+  const double det = _mm_cvtsd_f64(r) + high_lane(r);
+  // Maxima (no NaN can arise from finite inputs: the order does not matter).
+  const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  const __m128d lm = _mm_max_pd(l1, l2);
+  const __m128d zm = _mm_max_pd(_mm_and_pd(z1, abs_mask), _mm_and_pd(z2, abs_mask));
+  const double L = std::max(std::max(_mm_cvtsd_f64(lm), high_lane(lm)), is_lo2);
+  const double mz = std::max(std::max(_mm_cvtsd_f64(zm), high_lane(zm)), is_lo);
+  return {det, is_lift128 * (((L * 128) * L) * mz)};
+}
+#endif
+inline DetBound insphere_filter(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d, const Point3& e) {
+#if defined(__SSE2__)
+  return insphere_filter_sse2(a, b, c, d, e);
+#else
+  return insphere_filter_scalar(a, b, c, d, e);
+#endif
+}
+
 // The static orient3d bound (error_bounds.md 3.5) for points whose coordinate
 // differences are all at most w: the filter's bound with every axis maximum = w.
 inline double orient3d_static_bound(double w) {
@@ -384,33 +471,7 @@ struct AdaptiveKernel {
   template <class Rest>
   static Staged insphere_first_then(const Point3& a, const Point3& b, const Point3& c,
                                     const Point3& d, const Point3& e, Rest rest) {
-    const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
-    const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
-    const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
-    const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
-    const double ab = aex * bey - bex * aey;
-    const double bc = bex * cey - cex * bey;
-    const double cd = cex * dey - dex * cey;
-    const double da = dex * aey - aex * dey;
-    const double ac = aex * cey - cex * aey;
-    const double bd = bex * dey - dex * bey;
-    const double abc = (aez * bc - bez * ac) + cez * ab;
-    const double bcd = (bez * cd - cez * bd) + dez * bc;
-    const double cda = (cez * da + dez * ac) + aez * cd;
-    const double dab = (dez * ab + aez * bd) + bez * da;
-    const double alift = (aex * aex + aey * aey) + aez * aez;
-    const double blift = (bex * bex + bey * bey) + bez * bez;
-    const double clift = (cex * cex + cey * cey) + cez * cez;
-    const double dlift = (dex * dex + dey * dey) + dez * dez;
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    // Bound from the lifts det computes anyway (error_bounds.md 3.2): L' = max(largest
-    // lift, is_lo^2), mz' = max(largest |z difference|, is_lo); 128 L' first, so that an
-    // overflow anywhere in det makes the bound +inf.
-    using std::fabs, std::max;
-    const double L = max(max(max(alift, blift), max(clift, dlift)), adaptive::is_lo2);
-    const double mz =
-        max(max(max(fabs(aez), fabs(bez)), max(fabs(cez), fabs(dez))), adaptive::is_lo);
-    const double bound = adaptive::is_lift128 * (((L * 128) * L) * mz);
+    const auto [det, bound] = adaptive::insphere_filter(a, b, c, d, e);
     if (det > bound) return {Sign::positive, adaptive::stage_filter};
     if (-det > bound) return {Sign::negative, adaptive::stage_filter};
     return rest(a, b, c, d, e);
