@@ -72,6 +72,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "algorithms/mesh.hpp"
@@ -252,6 +253,8 @@ class Flipper {
   enum class Result : unsigned char { delaunay, flipped, unflippable, broken };
 
   Flipper(const K& k, Mesh<D>& m) : k_(&k), m_(&m) {}
+  Flipper(const Flipper&) = delete;  // created_ may point into direct_
+  Flipper& operator=(const Flipper&) = delete;
   void set_points(const Point<D>* pts) { pts_ = pts; }
 
   // Whether simplex s conflicts with vertex q: the Bowyer-Watson rule exactly
@@ -288,7 +291,8 @@ class Flipper {
                        FlipMesh<2>::substitute(*m_, s, (f + 2) % 3, d)};
       if (!(orient(nw[0]) == Sign::positive && orient(nw[1]) == Sign::positive)) return not_now();
       const std::uint32_t old[2] = {s, t};
-      if (!fm_.replace(*m_, old, 2, nw, 2, created_)) return Result::broken;
+      if (!fm_.replace(*m_, old, 2, nw, 2, replaced_)) return Result::broken;
+      created_ = replaced_;
       ++counts.f22;
       return Result::flipped;
     } else {
@@ -302,7 +306,7 @@ class Flipper {
     }
   }
 
-  const std::vector<std::uint32_t>& created() const { return created_; }
+  std::span<const std::uint32_t> created() const { return created_; }
   FlipCounts counts;
 
  private:
@@ -323,9 +327,12 @@ class Flipper {
     Simplex nw[4];
     Sign o[3];
     int neg = 0, zero = 0, which = -1;
+    // s and d are finite (conflict() is false for the ghost vertex), so is every
+    // nw[k]: no ghost to move, no ghost to skip.
     for (int k = 0; k < 3; ++k) {
-      nw[k] = FlipMesh<3>::substitute(*m_, s, xs[k], d);
-      o[k] = orient(nw[k]);
+      nw[k] = m_->simplex(s);
+      nw[k][xs[k]] = d;
+      o[k] = orient_pos(*k_, pts_[nw[k][0]], pts_[nw[k][1]], pts_[nw[k][2]], pts_[nw[k][3]]);
       if (o[k] == Sign::negative) ++neg, which = k;
       if (o[k] == Sign::zero) ++zero, which = k;
       if (neg + zero > 1) return not_now();  // no flip whatever the third sign
@@ -365,8 +372,8 @@ class Flipper {
     }
     m_->destroy(s);
     m_->destroy(t);
-    created_.resize(3);
-    std::uint32_t* c = created_.data();
+    std::uint32_t* c = direct_.data();
+    created_ = {c, 3};
     for (int k = 0; k < 3; ++k) c[k] = m_->create(nw[k]);
     for (int k = 0; k < 3; ++k) {
       m_->link(Mesh<3>::encode(c[k], xs[k]), out_s[k]);
@@ -397,8 +404,8 @@ class Flipper {
     m_->destroy(s);
     m_->destroy(t);
     m_->destroy(r);
-    created_.resize(2);
-    std::uint32_t* c = created_.data();
+    std::uint32_t* c = direct_.data();
+    created_ = {c, 2};
     for (int i = 0; i < 2; ++i) c[i] = m_->create(nw[ks[i]]);
     for (int i = 0; i < 2; ++i) {
       m_->link(Mesh<3>::encode(c[i], xs[ks[i]]), out[i][0]);
@@ -442,8 +449,8 @@ class Flipper {
                                   m_->neighbour(t, tz),     m_->neighbour(r2, fy2), m_->neighbour(r1, r1y),
                                   m_->neighbour(r2, fz2),   m_->neighbour(r1, r1z)};
     for (const std::uint32_t o : {s, t, r1, r2}) m_->destroy(o);
-    created_.resize(4);
-    std::uint32_t* c = created_.data();
+    std::uint32_t* c = direct_.data();
+    created_ = {c, 4};
     c[0] = m_->create(nw[ky]);  // A
     c[1] = m_->create(nw[kz]);  // B
     c[2] = m_->create(c2[0]);   // C
@@ -530,8 +537,9 @@ class Flipper {
     }
     if (with_p != 2) return not_now();
     if (!fm_.replace(*m_, ring_.data(), static_cast<int>(ring_.size()), news_.data(),
-                     static_cast<int>(news_.size()), created_))
+                     static_cast<int>(news_.size()), replaced_))
       return Result::broken;
+    created_ = replaced_;
     const std::uint64_t m = ring_.size() - 3;
     counts.f23 += m - 1;
     ++counts.f44;
@@ -543,7 +551,11 @@ class Flipper {
   Mesh<D>* m_;
   const Point<D>* pts_ = nullptr;
   FlipMesh<D> fm_;
-  std::vector<std::uint32_t> created_, ring_;
+  // The simplices the last flip made: direct_ (2-3, 3-2, 4-4) or replaced_ (by
+  // FlipMesh::replace), seen through created_.
+  std::array<std::uint32_t, 4> direct_{};
+  std::vector<std::uint32_t> replaced_, ring_;
+  std::span<const std::uint32_t> created_;
   std::vector<Simplex> news_;
   std::uint32_t s_apex_ = 0;
 };
