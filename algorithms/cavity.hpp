@@ -27,6 +27,7 @@
 // New simplices reuse the cavity's slots first; extra cavity slots go back to
 // the free list.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -90,22 +91,22 @@ class Restar {
     ids_.resize(records.size());
     std::uint32_t first = kNoNeighbour;
     bool first_finite = false;
-    for (std::size_t r = 0; r < records.size(); ++r) {
+    auto place = [&](std::size_t r, std::uint32_t s) {
       const BoundaryRecord<D>& rec = records[r];
-      std::uint32_t s;
-      if (r < cavity.size()) {
-        s = cavity[r];
-        m.assign(s, rec.v.data());
-      } else {
-        s = m.create(rec.v.data());
-      }
       ids_[r] = s;
       if (!first_finite && (first == kNoNeighbour || rec.v[D] != kGhost)) {  // the mesh is not read
         first = s;
         first_finite = rec.v[D] != kGhost;
       }
       m.link(Mesh<D>::encode(s, rec.slot), rec.outside);
+    };
+    // Two loops, so that the inline create() stays out of the reusing one.
+    const std::size_t reused = std::min(records.size(), cavity.size());
+    for (std::size_t r = 0; r < reused; ++r) {
+      m.assign(cavity[r], records[r].v.data());
+      place(r, cavity[r]);
     }
+    for (std::size_t r = reused; r < records.size(); ++r) place(r, m.create(records[r].v.data()));
     bool ok;
     if constexpr (D == 2)
       ok = (!verify && link_chain(m, records)) ||
