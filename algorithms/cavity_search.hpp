@@ -108,13 +108,17 @@ void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_
   NoGuard guard;
   cavity.clear();
   records.clear();
-  edges.clear();
+  // edges[0, top) is the stack (no push_back: g++ left it out of line here).
+  std::size_t top = 0;
+  auto push = [&](std::uint32_t e) {
+    if (top == edges.size()) [[unlikely]] edges.resize(2 * top + 16);
+    edges[top++] = e;
+  };
   m.set_mark(start, in);
   cavity.push_back(start);
-  for (int f = 2; f >= 0; --f) edges.push_back(Mesh<2>::encode(start, f));
-  while (!edges.empty()) {
-    const std::uint32_t e = edges.back();
-    edges.pop_back();
+  for (int f = 2; f >= 0; --f) push(Mesh<2>::encode(start, f));
+  while (top != 0) {
+    const std::uint32_t e = edges[--top];
     const std::uint32_t enc = m.neighbour_enc(e);
     const std::uint32_t t = Mesh<2>::simplex_of(enc);
     const std::uint32_t mk = m.mark(t);
@@ -124,8 +128,8 @@ void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_
         m.set_mark(t, in);
         cavity.push_back(t);
         const int j = Mesh<2>::facet_of(enc);
-        edges.push_back(Mesh<2>::encode(t, kBefore[j]));  // crossed second
-        edges.push_back(Mesh<2>::encode(t, kAfter[j]));   // crossed first
+        push(Mesh<2>::encode(t, kBefore[j]));  // crossed second
+        push(Mesh<2>::encode(t, kAfter[j]));   // crossed first
         continue;
       }
       m.set_mark(t, out);
