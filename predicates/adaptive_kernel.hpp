@@ -357,6 +357,59 @@ inline DetBound insphere_filter(const Point3& a, const Point3& b, const Point3& 
 #endif
 }
 
+// The incircle lift filter's determinant and bound (error_bounds.md 3.3), over the
+// differences to d:
+//   alift = adx^2 + ady^2, blift, clift;  bc = bdx cdy - bdy cdx, ca = cdx ady - cdy adx,
+//   ab = adx bdy - ady bdx;  det = (alift bc + blift ca) + clift ab,
+//   bound = ic_lift_filter (S' S'),  S' = max((alift + blift) + clift, ic_lift_lo)
+// (S' S' first: it overflows whenever an intermediate of det can). Two evaluations,
+// bit for bit the same: plain doubles, and SSE2 with the x and y of each point in one
+// register.
+inline DetBound incircle_filter_scalar(const Point2& a, const Point2& b, const Point2& c,
+                                       const Point2& d) {
+  const double adx = a[0] - d[0], ady = a[1] - d[1];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double bc = bdx * cdy - bdy * cdx;
+  const double ca = cdx * ady - cdy * adx;
+  const double ab = adx * bdy - ady * bdx;
+  const double det = (alift * bc + blift * ca) + clift * ab;
+  const double lifts = std::max((alift + blift) + clift, ic_lift_lo);
+  return {det, ic_lift_filter * (lifts * lifts)};
+}
+#if defined(__SSE2__)
+inline DetBound incircle_filter_sse2(const Point2& a, const Point2& b, const Point2& c,
+                                     const Point2& d) {
+  const __m128d dxy = _mm_loadu_pd(d.data());
+  const __m128d ad = _mm_sub_pd(_mm_loadu_pd(a.data()), dxy);  // (adx, ady)
+  const __m128d bd = _mm_sub_pd(_mm_loadu_pd(b.data()), dxy);
+  const __m128d cd = _mm_sub_pd(_mm_loadu_pd(c.data()), dxy);
+  const __m128d aa = _mm_mul_pd(ad, ad), bb = _mm_mul_pd(bd, bd), cc = _mm_mul_pd(cd, cd);
+  const __m128d lab = _mm_add_pd(_mm_unpacklo_pd(aa, bb), _mm_unpackhi_pd(aa, bb));  // (alift, blift)
+  const double clift = _mm_cvtsd_f64(cc) + high_lane(cc);
+  // (bdx cdy, bdy cdx), (cdx ady, cdy adx), (adx bdy, ady bdx): IEEE products commute exactly.
+  const __m128d pbc = _mm_mul_pd(bd, swap_lanes(cd)), pca = _mm_mul_pd(cd, swap_lanes(ad));
+  const __m128d pab = _mm_mul_pd(ad, swap_lanes(bd));
+  const __m128d m = _mm_sub_pd(_mm_unpacklo_pd(pbc, pca), _mm_unpackhi_pd(pbc, pca));  // (bc, ca)
+  const double ab = _mm_cvtsd_f64(pab) - high_lane(pab);
+  const __m128d t = _mm_mul_pd(lab, m);  // (alift bc, blift ca)
+  const double det = (_mm_cvtsd_f64(t) + high_lane(t)) + clift * ab;
+  const double lifts = std::max((_mm_cvtsd_f64(lab) + high_lane(lab)) + clift, ic_lift_lo);
+  return {det, ic_lift_filter * (lifts * lifts)};
+}
+#endif
+inline DetBound incircle_filter(const Point2& a, const Point2& b, const Point2& c,
+                                const Point2& d) {
+#if defined(__SSE2__)
+  return incircle_filter_sse2(a, b, c, d);
+#else
+  return incircle_filter_scalar(a, b, c, d);
+#endif
+}
+
 // The static orient3d bound (error_bounds.md 3.5) for points whose coordinate
 // differences are all at most w: the filter's bound with every axis maximum = w.
 inline double orient3d_static_bound(double w) {
@@ -428,20 +481,7 @@ struct AdaptiveKernel {
   template <class Rest>
   static Staged incircle_first_then(const Point2& a, const Point2& b, const Point2& c,
                                     const Point2& d, Rest rest) {
-    const double adx = a[0] - d[0], ady = a[1] - d[1];
-    const double bdx = b[0] - d[0], bdy = b[1] - d[1];
-    const double cdx = c[0] - d[0], cdy = c[1] - d[1];
-    const double alift = adx * adx + ady * ady;
-    const double blift = bdx * bdx + bdy * bdy;
-    const double clift = cdx * cdx + cdy * cdy;
-    const double bc = bdx * cdy - bdy * cdx;
-    const double ca = cdx * ady - cdy * adx;
-    const double ab = adx * bdy - ady * bdx;
-    const double det = (alift * bc + blift * ca) + clift * ab;
-    // S' = max(S, ic_lift_lo) (floor against gradual underflow); S' * S' first, so
-    // that it overflows whenever an intermediate of det can (error_bounds.md 3.3).
-    const double lifts = std::max((alift + blift) + clift, adaptive::ic_lift_lo);
-    const double bound = adaptive::ic_lift_filter * (lifts * lifts);
+    const auto [det, bound] = adaptive::incircle_filter(a, b, c, d);
     if (det > bound) return {Sign::positive, adaptive::stage_filter};
     if (-det > bound) return {Sign::negative, adaptive::stage_filter};
     return rest(a, b, c, d);

@@ -679,6 +679,37 @@ TEST_CASE("insphere filter: SSE2 and plain evaluations agree bit for bit", "[ada
 #endif
 }
 
+TEST_CASE("incircle filter: SSE2 and plain evaluations agree bit for bit", "[adaptive]") {
+#if defined(__SSE2__)
+  Rng r(29);
+  auto same = [](double x, double y) {
+    return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y));
+  };
+  int overflowed = 0, zero = 0;
+  for (int i = 0; i < 20000; ++i) {
+    std::array<Point2, 4> p;
+    const int center = r.range(-1000, 990), spread = (i % 3) * 15;
+    for (auto& q : p)
+      for (double& x : q) {
+        x = r.dbl(center - spread, center + spread);
+        if (r.next() % 8 == 0) x = 0;  // zeros: empty axes, exact cancellations
+      }
+    if (i % 5 == 0) p[3] = p[r.range(0, 2)];  // d repeats a point: det exactly 0
+    const auto v = adaptive::incircle_filter_sse2(p[0], p[1], p[2], p[3]);
+    const auto w = adaptive::incircle_filter_scalar(p[0], p[1], p[2], p[3]);
+    INFO("i " << i);
+    REQUIRE(same(v.det, w.det));
+    REQUIRE(same(v.bound, w.bound));
+    overflowed += std::isinf(v.bound);
+    zero += v.det == 0 && std::isfinite(v.bound) && v.bound > 0;
+  }
+  CHECK(overflowed > 0);  // overflowed bounds (exponents up to 1023) were compared too
+  CHECK(zero > 0);
+#else
+  SUCCEED("no SSE2: only the plain evaluation exists");
+#endif
+}
+
 namespace {
 
 // x + t steps of one ulp of `scale` (t may be negative; rounded, monotone in t).

@@ -563,6 +563,11 @@ std::string check_ic(double r, int offset, bool swap_ab, bool flip_axes, EdgeHit
     return "incircle lift filter answered against its documented bound at " + where;
   if (f.overflow && s.stage == adaptive::stage_filter)
     return "incircle lift filter answered on an overflowed determinant at " + where;
+  // The kernel's bound (SSE2 where built) and its scalar twin are the documented one, bit for bit.
+  for (const double kb : {adaptive::incircle_filter(p[0], p[1], p[2], p[3]).bound,
+                          adaptive::incircle_filter_scalar(p[0], p[1], p[2], p[3]).bound})
+    if (!(kb == f.bound || (std::isnan(kb) && std::isnan(f.bound))))
+      return "incircle filter bound (SSE2 or scalar) differs from error_bounds.md 3.3 at " + where;
   return "";
 }
 
@@ -631,6 +636,10 @@ std::string check_is(double r, double h, int offset, bool flip, EdgeHits& hits) 
     return "insphere lift filter answered against its documented bound at " + where;
   if (f.overflow && s.stage == adaptive::stage_filter)
     return "insphere lift filter answered on an overflowed determinant at " + where;
+  for (const double kb : {adaptive::insphere_filter(p[0], p[1], p[2], p[3], p[4]).bound,
+                          adaptive::insphere_filter_scalar(p[0], p[1], p[2], p[3], p[4]).bound})
+    if (!(kb == f.bound || (std::isnan(kb) && std::isnan(f.bound))))
+      return "insphere filter bound (SSE2 or scalar) differs from error_bounds.md 3.2 at " + where;
   return "";
 }
 
