@@ -17,6 +17,7 @@
 #include <limits>
 #include <random>
 #include <rapidcheck/catch.h>
+#include <tuple>
 #include <vector>
 
 #include "predicates/adaptive_kernel.hpp"
@@ -619,30 +620,47 @@ TEST_CASE("inline stages answer only above their documented bound", "[adaptive]"
   }
 }
 
-TEST_CASE("orient3d filter: SSE2 and plain evaluations agree bit for bit", "[adaptive]") {
 #if defined(__SSE2__)
-  Rng r(17);
+namespace {
+
+// The SSE2 evaluation of a filter and its plain twin return the same det and
+// bound, bit for bit, on 20 000 sets of N points in D dimensions: random
+// exponents from -1030 to 1020 (bounds that overflow included), zeros (empty
+// axes, exact cancellations), and every fifth set with its last point repeating
+// another (det exactly 0).
+template <int D, int N, class Sse2, class Plain>
+void twins_agree(std::uint64_t seed, Sse2 sse2, Plain plain) {
+  Rng r(seed);
   auto same = [](double x, double y) {
     return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y));
   };
-  int n = 0;
+  int overflowed = 0, zero = 0;
   for (int i = 0; i < 20000; ++i) {
-    std::array<Point3, 4> p;
+    std::array<std::array<double, D>, N> p;
     const int center = r.range(-1000, 990), spread = (i % 3) * 15;
     for (auto& q : p)
       for (double& x : q) {
         x = r.dbl(center - spread, center + spread);
-        if (r.next() % 8 == 0) x = 0;  // zeros: empty axes, exact cancellations
+        if (r.next() % 8 == 0) x = 0;
       }
-    if (i % 5 == 0) p[3] = p[r.range(0, 2)];  // a repeated point: det exactly 0
-    const auto v = adaptive::orient3d_filter_sse2(p[0], p[1], p[2], p[3]);
-    const auto w = adaptive::orient3d_filter_scalar(p[0], p[1], p[2], p[3]);
+    if (i % 5 == 0) p[N - 1] = p[r.range(0, N - 2)];
+    const adaptive::DetBound v = std::apply(sse2, p), w = std::apply(plain, p);
     INFO("i " << i);
     REQUIRE(same(v.det, w.det));
     REQUIRE(same(v.bound, w.bound));
-    n += std::isinf(v.bound) || v.bound == 0;
+    overflowed += std::isinf(v.bound);
+    zero += v.det == 0 && std::isfinite(v.bound) && v.bound > 0;
   }
-  CHECK(n > 0);  // some overflowed bounds (exponents up to 1030) were compared too
+  CHECK(overflowed > 0);
+  CHECK(zero > 0);
+}
+
+}  // namespace
+#endif
+
+TEST_CASE("orient3d filter: SSE2 and plain evaluations agree bit for bit", "[adaptive]") {
+#if defined(__SSE2__)
+  twins_agree<3, 4>(17, adaptive::orient3d_filter_sse2, adaptive::orient3d_filter_scalar);
 #else
   SUCCEED("no SSE2: only the plain evaluation exists");
 #endif
@@ -650,30 +668,7 @@ TEST_CASE("orient3d filter: SSE2 and plain evaluations agree bit for bit", "[ada
 
 TEST_CASE("insphere filter: SSE2 and plain evaluations agree bit for bit", "[adaptive]") {
 #if defined(__SSE2__)
-  Rng r(23);
-  auto same = [](double x, double y) {
-    return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y));
-  };
-  int overflowed = 0, zero = 0;
-  for (int i = 0; i < 20000; ++i) {
-    std::array<Point3, 5> p;
-    const int center = r.range(-1000, 990), spread = (i % 3) * 15;
-    for (auto& q : p)
-      for (double& x : q) {
-        x = r.dbl(center - spread, center + spread);
-        if (r.next() % 8 == 0) x = 0;  // zeros: empty axes, exact cancellations
-      }
-    if (i % 5 == 0) p[4] = p[r.range(0, 3)];  // e repeats a point: det exactly 0
-    const auto v = adaptive::insphere_filter_sse2(p[0], p[1], p[2], p[3], p[4]);
-    const auto w = adaptive::insphere_filter_scalar(p[0], p[1], p[2], p[3], p[4]);
-    INFO("i " << i);
-    REQUIRE(same(v.det, w.det));
-    REQUIRE(same(v.bound, w.bound));
-    overflowed += std::isinf(v.bound);
-    zero += v.det == 0 && std::isfinite(v.bound) && v.bound > 0;
-  }
-  CHECK(overflowed > 0);  // overflowed bounds (exponents up to 1023) were compared too
-  CHECK(zero > 0);
+  twins_agree<3, 5>(23, adaptive::insphere_filter_sse2, adaptive::insphere_filter_scalar);
 #else
   SUCCEED("no SSE2: only the plain evaluation exists");
 #endif
@@ -681,30 +676,7 @@ TEST_CASE("insphere filter: SSE2 and plain evaluations agree bit for bit", "[ada
 
 TEST_CASE("incircle filter: SSE2 and plain evaluations agree bit for bit", "[adaptive]") {
 #if defined(__SSE2__)
-  Rng r(29);
-  auto same = [](double x, double y) {
-    return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y));
-  };
-  int overflowed = 0, zero = 0;
-  for (int i = 0; i < 20000; ++i) {
-    std::array<Point2, 4> p;
-    const int center = r.range(-1000, 990), spread = (i % 3) * 15;
-    for (auto& q : p)
-      for (double& x : q) {
-        x = r.dbl(center - spread, center + spread);
-        if (r.next() % 8 == 0) x = 0;  // zeros: empty axes, exact cancellations
-      }
-    if (i % 5 == 0) p[3] = p[r.range(0, 2)];  // d repeats a point: det exactly 0
-    const auto v = adaptive::incircle_filter_sse2(p[0], p[1], p[2], p[3]);
-    const auto w = adaptive::incircle_filter_scalar(p[0], p[1], p[2], p[3]);
-    INFO("i " << i);
-    REQUIRE(same(v.det, w.det));
-    REQUIRE(same(v.bound, w.bound));
-    overflowed += std::isinf(v.bound);
-    zero += v.det == 0 && std::isfinite(v.bound) && v.bound > 0;
-  }
-  CHECK(overflowed > 0);  // overflowed bounds (exponents up to 1023) were compared too
-  CHECK(zero > 0);
+  twins_agree<2, 4>(29, adaptive::incircle_filter_sse2, adaptive::incircle_filter_scalar);
 #else
   SUCCEED("no SSE2: only the plain evaluation exists");
 #endif
