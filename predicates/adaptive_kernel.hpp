@@ -35,6 +35,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "predicates/determinants.hpp"
 #include "predicates/kernel.hpp"
 
 namespace dlab {
@@ -285,28 +286,14 @@ inline DetBound orient3d_filter(const Point3& a, const Point3& b, const Point3& 
 // doubles, and SSE2 with points a and c in one pair of lanes, b and d in the other.
 inline DetBound insphere_filter_scalar(const Point3& a, const Point3& b, const Point3& c,
                                        const Point3& d, const Point3& e) {
-  const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
-  const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
-  const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
-  const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
-  const double ab = aex * bey - bex * aey;
-  const double bc = bex * cey - cex * bey;
-  const double cd = cex * dey - dex * cey;
-  const double da = dex * aey - aex * dey;
-  const double ac = aex * cey - cex * aey;
-  const double bd = bex * dey - dex * bey;
-  const double abc = (aez * bc - bez * ac) + cez * ab;
-  const double bcd = (bez * cd - cez * bd) + dez * bc;
-  const double cda = (cez * da + dez * ac) + aez * cd;
-  const double dab = (dez * ab + aez * bd) + bez * da;
-  const double alift = (aex * aex + aey * aey) + aez * aez;
-  const double blift = (bex * bex + bey * bey) + bez * bez;
-  const double clift = (cex * cex + cey * cey) + cez * cez;
-  const double dlift = (dex * dex + dey * dey) + dez * dez;
-  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  const double det = ::dlab::det::insphere<double>(a, b, c, d, e);  // the tree above
   using std::fabs, std::max;
-  const double L = max(max(max(alift, blift), max(clift, dlift)), is_lo2);
-  const double mz = max(max(max(fabs(aez), fabs(bez)), max(fabs(cez), fabs(dez))), is_lo);
+  double L = is_lo2, mz = is_lo;  // the lifts are det's own (the same operations)
+  for (const Point3* p : {&a, &b, &c, &d}) {
+    const double x = (*p)[0] - e[0], y = (*p)[1] - e[1], z = (*p)[2] - e[2];
+    L = max(L, (x * x + y * y) + z * z);
+    mz = max(mz, fabs(z));
+  }
   return {det, is_lift128 * (((L * 128) * L) * mz)};
 }
 #if defined(__SSE2__)
@@ -367,17 +354,12 @@ inline DetBound insphere_filter(const Point3& a, const Point3& b, const Point3& 
 // register.
 inline DetBound incircle_filter_scalar(const Point2& a, const Point2& b, const Point2& c,
                                        const Point2& d) {
-  const double adx = a[0] - d[0], ady = a[1] - d[1];
-  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
-  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double bc = bdx * cdy - bdy * cdx;
-  const double ca = cdx * ady - cdy * adx;
-  const double ab = adx * bdy - ady * bdx;
-  const double det = (alift * bc + blift * ca) + clift * ab;
-  const double lifts = std::max((alift + blift) + clift, ic_lift_lo);
+  const double det = ::dlab::det::incircle<double>(a, b, c, d);  // the tree above
+  auto lift = [&](const Point2& p) {  // det's own lifts (the same operations)
+    const double x = p[0] - d[0], y = p[1] - d[1];
+    return x * x + y * y;
+  };
+  const double lifts = std::max((lift(a) + lift(b)) + lift(c), ic_lift_lo);
   return {det, ic_lift_filter * (lifts * lifts)};
 }
 #if defined(__SSE2__)
