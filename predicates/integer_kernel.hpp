@@ -43,6 +43,7 @@
 #include <span>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "predicates/adaptive_kernel.hpp"
@@ -214,28 +215,58 @@ std::array<Point<D>, N> rounded_differences(const std::array<std::array<std::int
   return r;
 }
 
-// The sign of det<B>(q) (q's base last), computed on the differences from
-// the base divided by their largest common power of two 2^g: the
-// determinants are homogeneous in the differences, so the sign stays, and
-// the shift of a multiple of 2^g is exact. Where every quotient is at most
-// 2^Small - 1, det<Small> holds it in narrower types (Small = 24 in 3D, 30 in
-// 2D: __int128): a lattice fitted to the grid has g about B - (its bits).
-template <int B, int Small, std::size_t N, std::size_t D, class Det>
-Sign reduced_sign(std::array<std::array<std::int64_t, D>, N> q, Det det) {
-  static_assert(Small <= B);
+// The largest B at which a determinant's every stage (the Budget bounds
+// above) fits int64, whose value_bits is 63: 2B+1, 4B+4, 3B+3, 5B+7 <= 63.
+inline constexpr int kInt64Orient2d = 31, kInt64InCircle = 14, kInt64Orient3d = 20, kInt64InSphere = 11;
+static_assert(std::is_same_v<Budget<kInt64Orient2d>::Minor2, std::int64_t> &&
+              !std::is_same_v<Budget<kInt64Orient2d + 1>::Minor2, std::int64_t>);
+static_assert(std::is_same_v<Budget<kInt64InCircle>::InCircle, std::int64_t> &&
+              !std::is_same_v<Budget<kInt64InCircle + 1>::InCircle, std::int64_t>);
+static_assert(std::is_same_v<Budget<kInt64Orient3d>::Minor3, std::int64_t> &&
+              !std::is_same_v<Budget<kInt64Orient3d + 1>::Minor3, std::int64_t>);
+static_assert(std::is_same_v<Budget<kInt64InSphere>::InSphere, std::int64_t> &&
+              !std::is_same_v<Budget<kInt64InSphere + 1>::InSphere, std::int64_t>);
+
+// q's differences from its base (the last point, which becomes the origin),
+// each divided by their largest common power of two 2^g (exact: each is a
+// multiple of 2^g); `magnitudes` is the OR of the quotients' absolute values
+// (0: every point is the base), below 2^k iff each of them is.
+template <std::size_t N, std::size_t D>
+struct Reduced {
+  std::array<std::array<std::int64_t, D>, N> q;
+  std::uint64_t magnitudes;
+};
+template <std::size_t N, std::size_t D>
+Reduced<N, D> reduce(std::array<std::array<std::int64_t, D>, N> q) {
   std::uint64_t bits = 0;
   for (std::size_t i = 0; i + 1 < N; ++i)
     for (std::size_t j = 0; j < D; ++j) bits |= static_cast<std::uint64_t>(q[i][j] -= q[N - 1][j]);
   q[N - 1] = {};
-  if (bits == 0) return Sign::zero;  // every point is the base
+  if (bits == 0) return {q, 0};
   const int g = std::countr_zero(bits);
-  std::int64_t most = 0;
+  std::uint64_t magnitudes = 0;
   for (std::size_t i = 0; i + 1 < N; ++i)
     for (std::size_t j = 0; j < D; ++j) {
-      q[i][j] >>= g;
-      most = std::max(most, q[i][j] < 0 ? -q[i][j] : q[i][j]);
+      q[i][j] >>= g;  // |q| <= 2^B - 1 < 2^62
+      magnitudes |= static_cast<std::uint64_t>(q[i][j] < 0 ? -q[i][j] : q[i][j]);
     }
-  if (most <= (std::int64_t{1} << Small) - 1) return sign(det.template operator()<Small>(q));
+  return {q, magnitudes};
+}
+
+// The sign of det<B>(q) (q's base last), computed on reduce(q): the
+// determinants are homogeneous in the differences, so the sign stays. Where
+// every quotient is at most 2^Small - 1, det<Small> holds it in narrower
+// types (Small = 24 in 3D, 30 in 2D: __int128), and where at most
+// 2^Tiny - 1, det<Tiny> in int64 alone (Tiny <= the kInt64 bound of det): a
+// lattice fitted to the grid has g about B - (its bits).
+template <int B, int Small, int Tiny, std::size_t N, std::size_t D, class Det>
+Sign reduced_sign(std::array<std::array<std::int64_t, D>, N> indices, Det det) {
+  static_assert(Tiny <= Small && Small <= B);
+  const auto [q, magnitudes] = reduce(indices);
+  if (magnitudes == 0) return Sign::zero;  // every point is the base
+  if constexpr (Tiny < Small)
+    if (magnitudes < (std::uint64_t{1} << Tiny)) return sign(det.template operator()<Tiny>(q));
+  if (magnitudes < (std::uint64_t{1} << Small)) return sign(det.template operator()<Small>(q));
   return sign(det.template operator()<B>(q));
 }
 
@@ -329,6 +360,11 @@ class BasicIntegerKernel {
   static constexpr std::array<std::string_view, 2> stage_names{"filter", "integer"};
   // The budgets of the integer stage's narrow path (intdet::reduced_sign).
   static constexpr int kSmall2 = B2 < 30 ? B2 : 30, kSmall3 = B3 < 24 ? B3 : 24;
+  // Their int64 paths, per determinant (intdet::kInt64*).
+  static constexpr int kTinyO2 = std::min(kSmall2, intdet::kInt64Orient2d),
+                       kTinyIC = std::min(kSmall2, intdet::kInt64InCircle),
+                       kTinyO3 = std::min(kSmall3, intdet::kInt64Orient3d),
+                       kTinyIS = std::min(kSmall3, intdet::kInt64InSphere);
   static_assert([] {
     for (const auto& s : {filter_bound::orient2d_spec, filter_bound::incircle_spec,
                           filter_bound::orient3d_spec, filter_bound::insphere_spec})
@@ -340,8 +376,8 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::orient2d<B>(q[0], q[1], q[2]); };
     if (grid_points_only2_)
       return first_then([&](auto rest) { return AdaptiveKernel::orient2d_first_then(a, b, c, rest); },
-                        [&](const auto&... x) { return integer_stage<B2, kSmall2>(det, g2_.grid_index(x)...); });
-    return filter_then<B2, kSmall2>(
+                        [&](const auto&... x) { return integer_stage<B2, kSmall2, kTinyO2>(det, g2_.grid_index(x)...); });
+    return filter_then<B2, kSmall2, kTinyO2>(
         [](const auto&... x) { return FloatFilter{}.orient2d(x...); }, det, g2_.index(a), g2_.index(b),
         g2_.index(c));
   }
@@ -349,8 +385,8 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
     if (grid_points_only2_)
       return first_then([&](auto rest) { return AdaptiveKernel::incircle_first_then(a, b, c, d, rest); },
-                        [&](const auto&... x) { return integer_stage<B2, kSmall2>(det, g2_.grid_index(x)...); });
-    return filter_then<B2, kSmall2>(
+                        [&](const auto&... x) { return integer_stage<B2, kSmall2, kTinyIC>(det, g2_.grid_index(x)...); });
+    return filter_then<B2, kSmall2, kTinyIC>(
         [](const auto&... x) { return FloatFilter{}.incircle(x...); }, det, g2_.index(a), g2_.index(b),
         g2_.index(c), g2_.index(d));
   }
@@ -358,8 +394,8 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
     if (grid_points_only3_)
       return first_then([&](auto rest) { return first_.orient3d_first_then(a, b, c, d, rest); },
-                        [&](const auto&... x) { return integer_stage<B3, kSmall3>(det, g3_.grid_index(x)...); });
-    return filter_then<B3, kSmall3>(
+                        [&](const auto&... x) { return integer_stage<B3, kSmall3, kTinyO3>(det, g3_.grid_index(x)...); });
+    return filter_then<B3, kSmall3, kTinyO3>(
         [](const auto&... x) { return FloatFilter{}.orient3d(x...); }, det, g3_.index(a), g3_.index(b),
         g3_.index(c), g3_.index(d));
   }
@@ -368,8 +404,8 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
     if (grid_points_only3_)
       return first_then([&](auto rest) { return AdaptiveKernel::insphere_first_then(a, b, c, d, e, rest); },
-                        [&](const auto&... x) { return integer_stage<B3, kSmall3>(det, g3_.grid_index(x)...); });
-    return filter_then<B3, kSmall3>(
+                        [&](const auto&... x) { return integer_stage<B3, kSmall3, kTinyIS>(det, g3_.grid_index(x)...); });
+    return filter_then<B3, kSmall3, kTinyIS>(
         [](const auto&... x) { return FloatFilter{}.insphere(x...); }, det, g3_.index(a), g3_.index(b),
         g3_.index(c), g3_.index(d), g3_.index(e));
   }
@@ -423,9 +459,9 @@ class BasicIntegerKernel {
 
  private:
   // The integer stage on indices q (the base last).
-  template <int B, int Small, class Det, class... I>
+  template <int B, int Small, int Tiny, class Det, class... I>
   static Staged integer_stage(Det det, const I&... q) {
-    return {intdet::reduced_sign<B, Small>(std::array{q...}, det), 1};
+    return {intdet::reduced_sign<B, Small, Tiny>(std::array{q...}, det), 1};
   }
   // first(rest): AdaptiveKernel's first stage on grid points, calling rest
   // (the integer stage, on their indices) where it cannot decide.
@@ -439,11 +475,11 @@ class BasicIntegerKernel {
     return {s.sign, static_cast<unsigned char>(integer ? 1 : 0)};
   }
   // FloatFilter on the rounded index differences, then the integer stage.
-  template <int B, int Small, class Filter, class Det, class... I>
+  template <int B, int Small, int Tiny, class Filter, class Det, class... I>
   static Staged filter_then(Filter filter, Det det, const I&... q) {
     const std::array indices{q...};
     if (const auto s = std::apply(filter, intdet::rounded_differences(indices))) return {*s, 0};
-    return {intdet::reduced_sign<B, Small>(indices, det), 1};
+    return {intdet::reduced_sign<B, Small, Tiny>(indices, det), 1};
   }
 
   template <class Grid, class P>

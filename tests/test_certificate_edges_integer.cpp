@@ -725,43 +725,148 @@ std::array<std::array<std::int64_t, D>, N> narrow_edge_points() {
 
 }  // namespace
 
-TEST_CASE("the integer stage's narrow path at its budget's edge agrees with mp",
+namespace {
+
+// Which path reduced_sign takes for q: 0 int64 (det<Tiny>), 1 narrow
+// (det<Small>), 2 wide (det<B>), -1 none (every point is the base).
+template <std::size_t N, std::size_t D>
+int reduced_path(const std::array<std::array<std::int64_t, D>, N>& q, int tiny, int small) {
+  std::int64_t most = 0, bits = 0;
+  for (std::size_t i = 0; i + 1 < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) {
+      const std::int64_t x = q[i][j] - q[N - 1][j];
+      bits |= x, most = std::max(most, std::abs(x));
+    }
+  if (bits == 0) return -1;
+  most >>= std::countr_zero(static_cast<std::uint64_t>(bits));
+  return most < (std::int64_t{1} << tiny) ? 0 : (most < (std::int64_t{1} << small) ? 1 : 2);
+}
+
+// The path of reduce()'s magnitude, as reduced_path numbers them.
+int width_path(std::uint64_t magnitudes, int tiny, int small) {
+  if (magnitudes == 0) return -1;
+  const int width = std::bit_width(magnitudes);
+  return width <= tiny ? 0 : (width <= small ? 1 : 2);
+}
+
+}  // namespace
+
+TEST_CASE("the integer stage's int64 and narrow paths at their budgets' edges agree with mp",
           "[certificate][integer][rc]") {
   // intdet::reduced_sign divides the differences by their largest common power
-  // of two and takes det<Small> (__int128) where every quotient is at most
-  // 2^Small - 1: corners of that box and just past it, times 2^g.
-  int narrow = 0, wide = 0;
+  // of two and takes det<Tiny> (int64) where every quotient is at most
+  // 2^Tiny - 1, det<Small> (__int128) where at most 2^Small - 1: corners of
+  // each box and just past it, times 2^g.
+  std::array<int, 3> paths{};
   const auto o2det = []<int B>(const auto& q) { return intdet::orient2d<B>(q[0], q[1], q[2]); };
   const auto icdet = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
   const auto o3det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
   const auto isdet = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
-  rc::prop("orient2d, incircle (Small = 30), orient3d, insphere (Small = 24)", [&] {
+  constexpr int tic = intdet::kInt64InCircle, to3 = intdet::kInt64Orient3d, tis = intdet::kInt64InSphere;
+  rc::prop("orient2d (Small = Tiny = 30), incircle (30, 14), orient3d (24, 20), insphere (24, 11)", [&] {
+    const bool at_tiny = *rc::gen::arbitrary<bool>();
     const auto o2 = narrow_edge_points<3, 2, 30>();
     const auto a = as_doubles(o2);
-    const Sign so2 = intdet::reduced_sign<62, 30>(o2, o2det);
-    RC_ASSERT(so2 == mp.orient2d(a[0], a[1], a[2]));
-    const auto ic = narrow_edge_points<4, 2, 30>();
+    RC_ASSERT((intdet::reduced_sign<62, 30, 30>(o2, o2det)) == mp.orient2d(a[0], a[1], a[2]));
+    const auto ic = at_tiny ? narrow_edge_points<4, 2, tic>() : narrow_edge_points<4, 2, 30>();
     const auto b = as_doubles(ic);
-    const Sign sic = intdet::reduced_sign<62, 30>(ic, icdet);
-    RC_ASSERT(sic == mp.incircle(b[0], b[1], b[2], b[3]));
-    const auto o3 = narrow_edge_points<4, 3, 24>();
+    RC_ASSERT((intdet::reduced_sign<62, 30, tic>(ic, icdet)) == mp.incircle(b[0], b[1], b[2], b[3]));
+    const auto o3 = at_tiny ? narrow_edge_points<4, 3, to3>() : narrow_edge_points<4, 3, 24>();
     const auto c = as_doubles(o3);
-    const Sign so3 = intdet::reduced_sign<62, 24>(o3, o3det);
-    RC_ASSERT(so3 == mp.orient3d(c[0], c[1], c[2], c[3]));
-    const auto is = narrow_edge_points<5, 3, 24>();
+    RC_ASSERT((intdet::reduced_sign<62, 24, to3>(o3, o3det)) == mp.orient3d(c[0], c[1], c[2], c[3]));
+    const auto is = at_tiny ? narrow_edge_points<5, 3, tis>() : narrow_edge_points<5, 3, 24>();
     const auto d = as_doubles(is);
-    const Sign sis = intdet::reduced_sign<62, 24>(is, isdet);
-    RC_ASSERT(sis == mp.insphere(d[0], d[1], d[2], d[3], d[4]));
-    std::int64_t most = 0, bits = 0;
-    for (std::size_t i = 0; i < 4; ++i)
-      for (std::size_t j = 0; j < 3; ++j) {
-        const std::int64_t x = is[i][j] - is[4][j];
-        bits |= x, most = std::max(most, std::abs(x));
-      }
-    if (bits != 0) ((most >> std::countr_zero(static_cast<std::uint64_t>(bits))) < (1 << 24) ? narrow : wide) += 1;
+    RC_ASSERT((intdet::reduced_sign<62, 24, tis>(is, isdet)) == mp.insphere(d[0], d[1], d[2], d[3], d[4]));
+    for (const int path : {reduced_path(o3, to3, 24), reduced_path(is, tis, 24)})
+      if (path >= 0) ++paths[static_cast<std::size_t>(path)];
+    // reduce()'s magnitude is the largest quotient's bit length, which picks the path.
+    RC_ASSERT(reduced_path(ic, tic, 30) == width_path(intdet::reduce(ic).magnitudes, tic, 30));
+    RC_ASSERT(reduced_path(o3, to3, 24) == width_path(intdet::reduce(o3).magnitudes, to3, 24));
+    RC_ASSERT(reduced_path(is, tis, 24) == width_path(intdet::reduce(is).magnitudes, tis, 24));
   });
-  CHECK(narrow > 10);
-  CHECK(wide > 10);
+  CHECK(paths[0] > 10);
+  CHECK(paths[1] > 10);
+  CHECK(paths[2] > 10);
+}
+
+namespace {
+
+// Regular-simplex corners of side 2M around a base (2^g M (+-1, ...) from it):
+// the configurations that reach the largest |det| on {-M, 0, M}^D (found by
+// search over that set): orient3d 4 M^3 (base and three corners), incircle
+// 8 M^4, insphere 48 M^5 (base and four corners).
+template <std::size_t N, std::size_t D>
+std::array<std::array<std::int64_t, D>, N> corners(std::int64_t m, int g, std::int64_t base) {
+  static constexpr int c3[4][3] = {{-1, -1, -1}, {-1, 1, 1}, {1, -1, 1}, {1, 1, -1}};
+  static constexpr int o3[3][3] = {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}};
+  static constexpr int c2[3][2] = {{-1, -1}, {-1, 1}, {1, -1}};
+  std::array<std::array<std::int64_t, D>, N> q;
+  for (std::size_t i = 0; i + 1 < N; ++i)
+    for (std::size_t j = 0; j < D; ++j) {
+      const int unit = D == 2 ? c2[i][j] : (N == 4 ? o3[i][j] : c3[i][j]);
+      q[i][j] = base + unit * (m << g);
+    }
+  q[N - 1].fill(base);
+  return q;
+}
+
+using BigInt = boost::multiprecision::mpz_int;
+
+// |det| of the corners, from its closed form, against the capacity 2^bits.
+bool fits(BigInt coefficient, std::int64_t m, int degree, int bits) {
+  return boost::multiprecision::abs(coefficient * boost::multiprecision::pow(BigInt(m), degree)) <
+         boost::multiprecision::pow(BigInt(2), bits);
+}
+
+}  // namespace
+
+TEST_CASE("each path of the integer stage takes one binade less than would overflow its type",
+          "[certificate][integer]") {
+  // reduced_sign's int64 paths (kInt64*) and its __int128 narrow path (Small
+  // = 24 in 3D, 30 in 2D) at M = 2^T - 1 (inside) and 2^(T+1) - 1 (outside):
+  // the largest determinant of the next binade does not fit the path's type,
+  // so a test that admitted it would evaluate it wrongly; both are answered
+  // right. (In-circle's bound 4B+4 is loose: 8 M^4 < 2^63 still at M = 2^15 - 1,
+  // so its edge shows two binades out.)
+  const auto o3det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
+  const auto icdet = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
+  const auto isdet = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
+  constexpr int tic = intdet::kInt64InCircle, to3 = intdet::kInt64Orient3d, tis = intdet::kInt64InSphere;
+  const std::int64_t base = std::int64_t{1} << 40;
+  for (const int g : {0, 7}) {
+    for (const std::int64_t m : {(std::int64_t{1} << tis) - 1, (std::int64_t{1} << (tis + 1)) - 1,
+                                 (std::int64_t{1} << 24) - 1, (std::int64_t{1} << 25) - 1}) {
+      const auto q = corners<5, 3>(m, g, base);
+      const auto p = as_doubles(q);
+      CHECK((intdet::reduced_sign<62, 24, tis>(q, isdet)) == mp.insphere(p[0], p[1], p[2], p[3], p[4]));
+    }
+    for (const std::int64_t m : {(std::int64_t{1} << to3) - 1, (std::int64_t{1} << (to3 + 1)) - 1}) {
+      const auto q = corners<4, 3>(m, g, base);
+      const auto p = as_doubles(q);
+      CHECK((intdet::reduced_sign<62, 24, to3>(q, o3det)) == mp.orient3d(p[0], p[1], p[2], p[3]));
+    }
+    for (const std::int64_t m : {(std::int64_t{1} << tic) - 1, (std::int64_t{1} << (tic + 2)) - 1}) {
+      const auto q = corners<4, 2>(m, g, base);
+      const auto p = as_doubles(q);
+      CHECK((intdet::reduced_sign<62, 30, tic>(q, icdet)) == mp.incircle(p[0], p[1], p[2], p[3]));
+    }
+  }
+  // The closed forms' sizes: inside each path's type at 2^T - 1, outside at the next binade.
+  CHECK(fits(48, (std::int64_t{1} << tis) - 1, 5, 63));
+  CHECK_FALSE(fits(48, (std::int64_t{1} << (tis + 1)) - 1, 5, 63));
+  CHECK(fits(48, (std::int64_t{1} << 24) - 1, 5, 127));
+  CHECK_FALSE(fits(48, (std::int64_t{1} << 25) - 1, 5, 127));
+  CHECK(fits(4, (std::int64_t{1} << to3) - 1, 3, 63));
+  CHECK_FALSE(fits(4, (std::int64_t{1} << (to3 + 1)) - 1, 3, 63));
+  CHECK(fits(8, (std::int64_t{1} << (tic + 1)) - 1, 4, 63));
+  CHECK_FALSE(fits(8, (std::int64_t{1} << (tic + 2)) - 1, 4, 63));
+  // And the closed forms are the determinants (wide path, exact).
+  const auto q = corners<5, 3>(3, 0, 0);
+  CHECK(intdet::insphere<11>(q[0], q[1], q[2], q[3], q[4]) == -48 * 243);
+  const auto r = corners<4, 3>(3, 0, 0);
+  CHECK(std::abs(static_cast<long long>(intdet::orient3d<20>(r[0], r[1], r[2], r[3]))) == 4 * 27);
+  const auto c = corners<4, 2>(3, 0, 0);
+  CHECK(std::abs(static_cast<long long>(intdet::incircle<14>(c[0], c[1], c[2], c[3]))) == 8 * 81);
 }
 
 TEST_CASE("the integer kernel takes coordinates as they are only for grid points",
