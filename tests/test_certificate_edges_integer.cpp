@@ -826,8 +826,8 @@ TEST_CASE("each path of the integer stage takes one binade less than would overf
   // = 24 in 3D, 30 in 2D) at M = 2^T - 1 (inside) and 2^(T+1) - 1 (outside):
   // the largest determinant of the next binade does not fit the path's type,
   // so a test that admitted it would evaluate it wrongly; both are answered
-  // right. (In-circle's bound 4B+4 is loose: 8 M^4 < 2^63 still at M = 2^15 - 1,
-  // so its edge shows two binades out.)
+  // right. (In-circle's corner value still fits int64 one binade out, 8 M^4 <
+  // 2^63 at M = 2^15 - 1, so its edge shows two binades out.)
   const auto o3det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
   const auto icdet = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
   const auto isdet = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
