@@ -2,10 +2,13 @@
 // prefix (its hex format is the bare digits), so both are handled here.
 #include "cli/numbers.hpp"
 
+#include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <system_error>
 
 namespace dlab::io {
@@ -26,6 +29,50 @@ bool mantissa_is_zero(std::string_view body, bool hex) {
   return true;
 }
 
+// Each byte's hexadecimal digit value, -1 for a byte that is none: a table,
+// since random digits would make a branch per case mispredict.
+constexpr auto kHexValue = [] {
+  std::array<signed char, 256> t{};
+  t.fill(-1);
+  for (int c = '0'; c <= '9'; ++c) t[c] = static_cast<signed char>(c - '0');
+  for (int c = 'a'; c <= 'f'; ++c) t[c] = static_cast<signed char>(c - 'a' + 10);
+  for (int c = 'A'; c <= 'F'; ++c) t[c] = static_cast<signed char>(c - 'A' + 10);
+  return t;
+}();
+int hex_value(char c) { return kHexValue[static_cast<unsigned char>(c)]; }
+
+// The normalised hexadecimal form that format_hex and C's "%a" write, without
+// its sign and "0x": "1.hhh...pE" with at most 13 fraction digits and
+// -1022 <= E <= 1023 (at most 4 exponent digits), whose value
+// 1.hhh... * 2^E is a normal double exactly (13 hex digits are its 52
+// fraction bits), assembled from its bits. Anything else: nullopt, and
+// from_chars reads it.
+std::optional<double> normalised_hex(std::string_view body) {
+  if (body.size() < 3 || body[0] != '1') return std::nullopt;
+  std::size_t i = 1;
+  std::uint64_t fraction = 0;
+  int digits = 0;
+  if (body[i] == '.')
+    for (++i; i < body.size() && digits < 13; ++i, ++digits) {
+      const int h = hex_value(body[i]);
+      if (h < 0) break;
+      fraction = fraction << 4 | static_cast<std::uint64_t>(h);
+    }
+  if (i >= body.size() || (body[i] != 'p' && body[i] != 'P')) return std::nullopt;
+  ++i;
+  const bool negative = i < body.size() && body[i] == '-';
+  if (i < body.size() && (body[i] == '-' || body[i] == '+')) ++i;
+  if (i == body.size() || body.size() - i > 4) return std::nullopt;
+  int e = 0;
+  for (; i < body.size(); ++i) {
+    if (!is_digit(body[i])) return std::nullopt;
+    e = 10 * e + (body[i] - '0');
+  }
+  if (negative) e = -e;
+  if (e < -1022 || e > 1023) return std::nullopt;
+  return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52 | fraction << (4 * (13 - digits)));
+}
+
 }  // namespace
 
 ParsedDouble parse_double(std::string_view tok) {
@@ -38,6 +85,12 @@ ParsedDouble parse_double(std::string_view tok) {
   }
   bool hex = body.size() >= 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X');
   if (hex) body.remove_prefix(2);
+  if (hex)
+    if (const std::optional<double> v = normalised_hex(body)) {  // what dlab writes: no rounding
+      out.status = ParseStatus::ok;
+      out.value = negative ? -*v : *v;
+      return out;
+    }
   if (body.empty()) return out;
   // The first character must start a number (from_chars would also read
   // "inf"/"nan", handled below only for the decimal form).

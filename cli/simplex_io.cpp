@@ -1,30 +1,69 @@
 // See simplex_io.hpp.
 #include "cli/simplex_io.hpp"
 
-#include <charconv>
+#include <array>
 
 #include "cli/numbers.hpp"
 #include "cli/point_reader.hpp"
 
 namespace dlab::io {
 
+namespace {
+
+// "00" "01" ... "99": two decimal digits per lookup.
+constexpr auto kDigitPairs = [] {
+  std::array<char, 200> t{};
+  for (int i = 0; i < 100; ++i) {
+    t[2 * i] = static_cast<char>('0' + i / 10);
+    t[2 * i + 1] = static_cast<char>('0' + i % 10);
+  }
+  return t;
+}();
+
+int decimal_length(std::uint32_t v) {
+  int n = 1;
+  for (std::uint32_t bound = 10; n < 10 && v >= bound; bound *= 10) ++n;
+  return n;
+}
+
+// v in decimal at p (at most 10 characters); returns the end.
+char* write_decimal(char* p, std::uint32_t v) {
+  const int n = decimal_length(v);
+  char* q = p + n;
+  while (v >= 100) {
+    const std::uint32_t pair = (v % 100) * 2;
+    v /= 100;
+    *--q = kDigitPairs[pair + 1];
+    *--q = kDigitPairs[pair];
+  }
+  if (v >= 10) {
+    *--q = kDigitPairs[2 * v + 1];
+    *--q = kDigitPairs[2 * v];
+  } else {
+    *--q = static_cast<char>('0' + v);
+  }
+  return p + n;
+}
+
+}  // namespace
+
 void write_simplices(std::ostream& out, const std::vector<std::uint32_t>& s, int dimension) {
   const std::size_t k = static_cast<std::size_t>(dimension) + 1;
-  std::string buf;
-  buf.reserve(1 << 16);
-  char num[16];
+  constexpr std::size_t kBuffer = 1 << 16;
+  const std::size_t line_max = k * 11;  // 10 digits and a separator per index
+  std::vector<char> buf(kBuffer);
+  char* p = buf.data();
   for (std::size_t i = 0; i + k <= s.size(); i += k) {
-    for (std::size_t j = 0; j < k; ++j) {
-      auto r = std::to_chars(num, num + sizeof num, s[i + j]);
-      buf.append(num, r.ptr);
-      buf.push_back(j + 1 == k ? '\n' : ' ');
+    if (static_cast<std::size_t>(buf.data() + kBuffer - p) < line_max) {
+      out.write(buf.data(), p - buf.data());
+      p = buf.data();
     }
-    if (buf.size() > (1 << 16) - 64) {
-      out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
-      buf.clear();
+    for (std::size_t j = 0; j < k; ++j) {
+      p = write_decimal(p, s[i + j]);
+      *p++ = j + 1 == k ? '\n' : ' ';
     }
   }
-  out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+  out.write(buf.data(), p - buf.data());
 }
 
 std::vector<std::uint32_t> parse_simplices(std::string_view text, const std::string& name,

@@ -109,6 +109,41 @@ TEST_CASE("parse_double reads decimal and C99 hexadecimal floats exactly", "[io]
   CHECK(same_bits(parsed("-0x0.000p+99999"), -0.0));
 }
 
+TEST_CASE("parse_double's shortcut for normalised hex floats agrees with strtod", "[io][rc]") {
+  // parse_double assembles "1.hhh...pE" (at most 13 digits, E in [-1022, 1023])
+  // from its bits; strtod is the independent reference, on that form and
+  // around each of its limits (digit count, exponent range and width, case).
+  rc::prop("a mantissa of 0 to 14 digits and an exponent around the normal range", [] {
+    const int digits = *rc::gen::inRange(0, 15);
+    std::string t = *rc::gen::element(std::string("0x1"), std::string("0X1"), std::string("-0x1"),
+                                      std::string("+0x1"));
+    if (digits > 0 || *rc::gen::arbitrary<bool>()) t += '.';
+    for (int d = 0; d < digits; ++d) t += "0123456789abcdefABCDEF"[*rc::gen::inRange(0, 22)];
+    const int e = *rc::gen::element(-1075, -1074, -1023, -1022, -1021, -1, 0, 1, 1022, 1023, 1024,
+                                    *rc::gen::inRange(-1100, 1100));
+    t += *rc::gen::element('p', 'P');
+    t += e < 0 ? "-" : *rc::gen::element(std::string("+"), std::string(""));
+    t += *rc::gen::element(std::string(""), std::string("0")) + std::to_string(e < 0 ? -e : e);
+    RC_TAG(digits > 13 ? "digits > 13" : "digits <= 13");
+    const double reference = std::strtod(t.c_str(), nullptr);
+    const ParsedDouble p = parse_double(t);
+    if (std::isinf(reference)) {
+      RC_ASSERT(p.status == ParseStatus::out_of_range);
+    } else if (reference == 0) {
+      RC_ASSERT(p.status == ParseStatus::underflow);
+    } else {
+      RC_ASSERT(p.status == ParseStatus::ok);
+      RC_ASSERT(same_bits(p.value, reference));
+    }
+  });
+  rc::prop("format_hex's output of any finite double", [] {
+    const double x = random_double();
+    const std::string t = format_hex(x);
+    RC_ASSERT(same_bits(parsed(t), std::strtod(t.c_str(), nullptr)));
+    RC_ASSERT(same_bits(parsed(t), x));
+  });
+}
+
 TEST_CASE("a nonzero literal that rounds to zero is rejected as an overflow is", "[io]") {
   for (const char* tiny : {"1e-400", "-1e-400", "0x1p-1075", "-0x1p-1075", "0x1p-1076", "0x.8p-1074",
                            "-2.4703282292062327e-324", "0.00000000000000000000000001e-300",
@@ -457,6 +492,32 @@ TEST_CASE("points written as hex or decimal read back bit for bit", "[io]") {
     for (std::size_t i = 0; i < ps.p3.size(); ++i)
       for (int j = 0; j < 3; ++j) RC_ASSERT(same_bits(back.p3[i][j], ps.p3[i][j]));
   });
+}
+
+TEST_CASE("SIMPLICES writer: every digit count, and across its buffer", "[io]") {
+  // The writer formats indices itself; std::to_string is the reference. Each
+  // power of ten and its predecessor, the largest index, and enough simplices
+  // (random indices) to flush the 64 KiB buffer many times.
+  std::vector<std::uint32_t> s;
+  for (std::uint64_t p = 1; p <= 10'000'000'000ull; p *= 10)
+    for (const std::uint64_t v : {p - 1, p, p + 1})
+      if (v <= 0xFFFFFFFFull) s.push_back(static_cast<std::uint32_t>(v));
+  s.push_back(0xFFFFFFFFu);
+  std::uint64_t x = 88172645463325252ull;
+  while (s.size() < 4 * 40000) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    s.push_back(static_cast<std::uint32_t>(x >> (x % 32)));  // every length
+  }
+  for (const int dim : {2, 3}) {
+    const std::size_t k = static_cast<std::size_t>(dim) + 1;
+    std::string expected;
+    for (std::size_t i = 0; i + k <= s.size(); i += k)
+      for (std::size_t j = 0; j < k; ++j) expected += std::to_string(s[i + j]) + (j + 1 == k ? "\n" : " ");
+    std::ostringstream out;
+    write_simplices(out, s, dim);
+    CHECK(out.str().size() > 4 * 65536);
+    CHECK(out.str() == expected);
+  }
 }
 
 TEST_CASE("SIMPLICES reader and writer", "[io]") {
