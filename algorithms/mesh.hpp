@@ -45,6 +45,8 @@
 #include <unistd.h>
 #endif
 
+#include "algorithms/huge_pages.hpp"
+
 namespace dlab {
 
 inline constexpr std::uint32_t kGhost = 0xFFFFFFFFu;  // the vertex at infinity
@@ -65,17 +67,23 @@ struct MarkWords {
 };
 
 // Allocator for the simplex array: 64-byte aligned, so that a 32-byte simplex
-// block never straddles two cache lines (large mallocs are only 16-aligned).
+// block never straddles two cache lines (large mallocs are only 16-aligned);
+// an array of a huge page or more is aligned to one and advised as huge pages
+// before it is touched (algorithms/huge_pages.hpp).
 template <class T>
 struct CacheAligned {
   using value_type = T;
   CacheAligned() = default;
   template <class U>
   CacheAligned(const CacheAligned<U>&) {}
+  static std::align_val_t alignment(std::size_t bytes) { return std::align_val_t(bytes >= kHugePage ? kHugePage : 64); }
   T* allocate(std::size_t n) {
-    return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64)));
+    const std::size_t bytes = n * sizeof(T);
+    T* p = static_cast<T*>(::operator new(bytes, alignment(bytes)));
+    if (bytes >= kHugePage) advise_huge_pages(p, bytes);
+    return p;
   }
-  void deallocate(T* p, std::size_t) { ::operator delete(p, std::align_val_t(64)); }
+  void deallocate(T* p, std::size_t n) { ::operator delete(p, alignment(n * sizeof(T))); }
   template <class U>
   bool operator==(const CacheAligned<U>&) const { return true; }
 };

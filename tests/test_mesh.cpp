@@ -9,9 +9,11 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "algorithms/bowyer_watson.hpp"
+#include "algorithms/huge_pages.hpp"
 #include "algorithms/lawson.hpp"
 #include "algorithms/simplex_guard.hpp"
 #include "fuzz/generators.hpp"
@@ -160,3 +162,27 @@ TEST_CASE("mesh: the serial 3D Bowyer-Watson's mesh stops where its marks need",
   CHECK(bw2.mesh().max_slots() == Mesh<2>::kMaxSlots);
   CHECK(triangulated_mesh<3>(50).max_slots() == Mesh<3>::kMaxSlots);
 }
+
+TEST_CASE("mesh: the slot array's allocator, huge-page aligned from a huge page on", "[mesh]") {
+  // huge_page_range: the whole 2 MiB pages inside a range.
+  constexpr std::uintptr_t H = kHugePage;
+  CHECK(huge_page_range(0, H) == std::pair<std::uintptr_t, std::uintptr_t>{0, H});
+  CHECK(huge_page_range(H, H - 1).first == huge_page_range(H, H - 1).second);  // less than a page
+  CHECK(huge_page_range(1, H).first == huge_page_range(1, H).second);          // straddles two
+  CHECK(huge_page_range(1, 2 * H) == std::pair<std::uintptr_t, std::uintptr_t>{H, 2 * H});
+  CHECK(huge_page_range(H - 1, 3 * H + 1) == std::pair<std::uintptr_t, std::uintptr_t>{H, 4 * H});
+  CHECK(huge_page_range(H - 1, 3 * H) == std::pair<std::uintptr_t, std::uintptr_t>{H, 3 * H});
+  // Allocations of a huge page or more start on one (whole pages for the advice),
+  // smaller ones on a cache line; either way the memory is usable.
+  CacheAligned<std::uint32_t> a;
+  for (const std::size_t n : {std::size_t{100}, kHugePage / 4 - 1, kHugePage / 4, kHugePage})
+    for (int round = 0; round < 3; ++round) {
+      std::uint32_t* p = a.allocate(n);
+      const auto address = reinterpret_cast<std::uintptr_t>(p);
+      CHECK(address % (n * sizeof(std::uint32_t) >= kHugePage ? kHugePage : 64) == 0);
+      p[0] = 1, p[n - 1] = 2;
+      CHECK(p[0] + p[n - 1] == 3);
+      a.deallocate(p, n);
+    }
+}
+

@@ -1,0 +1,38 @@
+// Transparent huge pages (Linux) for the simplex slots (algorithms/mesh.hpp),
+// which the walk and the cavity searches touch all over: with 4 KiB pages
+// nearly every step to a slot not touched lately misses the TLB, and each
+// page is a fault of its own; a 2 MiB page covers 512 of them
+// (papers/triangulation_costs.md, session 23). Advice only: the kernel uses
+// huge pages where THP is enabled ("madvise" or "always") and it has them
+// free; nothing else changes, the results least of all. Elsewhere: nothing.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace dlab {
+
+inline constexpr std::size_t kHugePage = std::size_t{1} << 21;
+
+// The whole 2 MiB pages inside [p, p + bytes), as addresses [first, last)
+// (first == last: none).
+inline std::pair<std::uintptr_t, std::uintptr_t> huge_page_range(std::uintptr_t p, std::size_t bytes) {
+  const std::uintptr_t first = (p + kHugePage - 1) / kHugePage * kHugePage;
+  const std::uintptr_t last = (p + bytes) / kHugePage * kHugePage;
+  return last > first ? std::pair{first, last} : std::pair{first, first};
+}
+
+// MADV_HUGEPAGE on those pages: the ones faulted in from now on are huge.
+inline void advise_huge_pages(const void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const auto [first, last] = huge_page_range(reinterpret_cast<std::uintptr_t>(p), bytes);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+
+}  // namespace dlab
