@@ -14,9 +14,6 @@
 namespace dlab::io {
 namespace {
 
-bool is_hex_digit(char c) {
-  return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
-}
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 // True if every digit before the exponent ('e' decimal, 'p' hex) is 0, i.e.
@@ -40,6 +37,7 @@ constexpr auto kHexValue = [] {
   return t;
 }();
 int hex_value(char c) { return kHexValue[static_cast<unsigned char>(c)]; }
+bool is_hex_digit(char c) { return hex_value(c) >= 0; }
 
 // The normalised hexadecimal form that format_hex and C's "%a" write, without
 // its sign and "0x": "1.hhh...pE" with at most 13 fraction digits and
