@@ -132,7 +132,7 @@ class Restar {
   std::size_t bytes_reserved() const { return table_.capacity() * sizeof(Entry); }
 
   // The simplices created by the last successful star(), one per boundary
-  // record, in record order (George's method stores a circumsphere for each).
+  // record, in record order.
   const std::vector<std::uint32_t>& created() const { return ids_; }
 
  private:

@@ -9,8 +9,8 @@
 //       two elements for P on a facet, the shell for P on an edge);
 //   (2) approximate cavity: grown by adjacency from the base with the FLOATING
 //       circumsphere test |P - c|^2 < r^2 on each element's centre and radius
-//       stored in doubles when it was created (section 2.4;
-//       algorithms/circumsphere_store.hpp);
+//       in doubles (section 2.4, which keeps them in tables; here they are
+//       recomputed per test, with the same answers: algorithms/floating_sphere.hpp);
 //   (3) connectivity: elements not connected to the base through the cavity
 //       are removed;
 //   (4) volumes: for each boundary face F_j the simplex K_j = (F_j, P) has its
@@ -81,7 +81,7 @@
 
 #include "algorithms/cavity.hpp"
 #include "algorithms/cavity_histogram.hpp"
-#include "algorithms/circumsphere_store.hpp"
+#include "algorithms/floating_sphere.hpp"
 #include "algorithms/george_box.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/locate.hpp"
@@ -93,7 +93,7 @@
 namespace dlab {
 
 struct GeorgeOptions {
-  bool exact_sphere = false;   // exact (kernel) circumsphere test instead of the stored floating one
+  bool exact_sphere = false;   // exact (kernel) circumsphere test instead of the floating one
   bool enclosing_box = false;  // the paper's enclosing box instead of the ghost vertex
 };
 
@@ -122,9 +122,10 @@ class George {
   bool insert(std::uint32_t i);
   bool correct(std::uint32_t i, std::size_t nbase);
   bool approx_conflict(std::uint32_t t, const Point<D>& p);
-  Face face_volume(std::uint32_t s, int f, std::uint32_t outside, const Point<D>& p) const;
-  void store_sphere(std::uint32_t s);
-  bool member(std::uint32_t t) const { return mesh_.mark(t) == base_ || mesh_.mark(t) == in_; }
+  Face face_volume(const BoundaryRecord<D>& r, const Point<D>& p) const;
+  bool first_round_positive(std::uint32_t i);
+  // base_ and in_ are consecutive stamps: one unsigned comparison.
+  bool member(std::uint32_t t) const { return mesh_.mark(t) - base_ < 2; }
   void exclude(std::uint32_t t) { mesh_.set_mark(t, excl_); }
   void fail(std::string msg) { message_ = std::move(msg); }
 
@@ -132,14 +133,13 @@ class George {
   GeorgeOptions opt_;
   Mesh<D> mesh_;
   Restar<D> restar_;
-  CircumsphereStore<D> spheres_;
   std::vector<Point<D>> box_pts_;  // input + box corners (enclosing_box)
   const Point<D>* pts_ = nullptr;
   std::size_t npts_ = 0;            // points including box corners
   MergeRecord<D> merged_;  // which vertex each point became
   std::vector<std::uint32_t> cavity_, queue_;
+  std::vector<std::uint32_t> faces_;  // step 2's boundary faces, encoded (s, f), in step 3's order
   std::vector<BoundaryRecord<D>> records_;
-  std::vector<std::uint32_t> rec_src_;  // cavity element of each record
   std::vector<std::uint32_t> vmark_;    // per vertex (ghost last): step 6 stamps
   std::uint32_t vstamp_ = 0;
   std::uint32_t last_ = 0;
@@ -153,14 +153,6 @@ class George {
                 corrected_insertions_ = 0, rounds_ = 0, base_total_ = 0, box_removed_ = 0;
   CavityHistogram cavity_sizes_;
 };
-
-template <class K, int D>
-void George<K, D>::store_sphere(std::uint32_t s) {
-  if (mesh_.is_ghost(s)) return;
-  std::array<const Point<D>*, V> v;
-  for (int j = 0; j < V; ++j) v[j] = &pts_[mesh_.vertex(s, j)];
-  spheres_.set(s, v);
-}
 
 template <class K, int D>
 bool George<K, D>::approx_conflict(std::uint32_t t, const Point<D>& p) {
@@ -182,17 +174,25 @@ bool George<K, D>::approx_conflict(std::uint32_t t, const Point<D>& p) {
       return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[w[3]], p) == Sign::positive;
   }
   ++float_tests_;
-  return spheres_.inside(t, pts_[w[0]], p);
+  std::array<const Point<D>*, V> v;
+  for (int j = 0; j < V; ++j) v[j] = &pts_[w[j]];
+  return inside_floating_sphere<D>(v, p);
 }
 
-// The sign of the new simplex (face f of cavity element s, joined to p), with
-// `outside` the encoded facet across f.  See the header for ghost faces.
+// The sign of the new simplex r (face r.slot of cavity element s joined to p,
+// r.outside the encoded facet across it).  See the header for ghost faces.
 template <class K, int D>
-typename George<K, D>::Face George<K, D>::face_volume(std::uint32_t s, int f, std::uint32_t outside,
-                                                     const Point<D>& p) const {
+typename George<K, D>::Face George<K, D>::face_volume(const BoundaryRecord<D>& r, const Point<D>& p) const {
   auto as_face = [](Sign o) { return o == Sign::positive ? Face::positive : o == Sign::negative ? Face::negative : Face::zero; };
-  if (!mesh_.is_ghost(s) || f == D) return as_face(orient_with<K, D>(k_, mesh_, pts_, s, f, p));
+  if (r.v[D] != kGhost) {  // a finite new simplex: its vertices are r.v (p is pts_[r.v[r.slot]])
+    if constexpr (D == 2)
+      return as_face(orient_pos(k_, pts_[r.v[0]], pts_[r.v[1]], pts_[r.v[2]]));
+    else
+      return as_face(orient_pos(k_, pts_[r.v[0]], pts_[r.v[1]], pts_[r.v[2]], pts_[r.v[3]]));
+  }
   // A new ghost (p, ridge, ghost): u is the ghost behind the face.
+  const int f = r.slot;
+  const std::uint32_t outside = r.outside;
   const std::uint32_t u = Mesh<D>::simplex_of(outside);
   const Sign o = orient_with<K, D>(k_, mesh_, pts_, u, D, p);
   if (o == Sign::positive) return Face::negative;  // u's hull facet seen: the new hull would be reflex
@@ -201,19 +201,35 @@ typename George<K, D>::Face George<K, D>::face_volume(std::uint32_t s, int f, st
   const int fu = Mesh<D>::facet_of(outside);  // u's vertex not on the ridge (u's slot D holds the ghost)
   const Point<D>& y = pts_[mesh_.vertex(u, fu)];
   if constexpr (D == 2) {
-    const Point2& b = pts_[mesh_.vertex(s, 1 - f)];  // the ridge is one vertex
+    const Point2& b = pts_[r.v[1 - f]];  // the ridge is one vertex
     return strictly_between(p, b, y) ? Face::positive : Face::negative;
   } else {
     std::uint32_t e[2];
     int n = 0;
     for (int i = 0; i < D; ++i)
-      if (i != f) e[n++] = mesh_.vertex(s, i);
+      if (i != f) e[n++] = r.v[i];
     const std::uint32_t w = mesh_.neighbour(u, D);
     const Point3& z = pts_[mesh_.vertex(Mesh<3>::simplex_of(w), Mesh<3>::facet_of(w))];
     const Sign sp = k_.orient3d(pts_[e[0]], pts_[e[1]], z, p);
     const Sign sy = k_.orient3d(pts_[e[0]], pts_[e[1]], z, y);
     return sp != Sign::zero && sp == -sy ? Face::positive : Face::negative;
   }
+}
+
+// Step 4 on step 2's boundary faces before anything changed: true, with
+// records_ the new simplices, iff every face is positive.
+template <class K, int D>
+bool George<K, D>::first_round_positive(std::uint32_t i) {
+  const Point<D>& p = pts_[i];
+  records_.clear();
+  for (std::uint32_t e : faces_) {
+    const std::uint32_t s = Mesh<D>::simplex_of(e);
+    const int f = Mesh<D>::facet_of(e);
+    const BoundaryRecord<D> r = boundary_record<D>(mesh_, s, f, i, mesh_.neighbour(s, f));
+    if (face_volume(r, p) != Face::positive) return false;
+    records_.push_back(r);
+  }
+  return true;
 }
 
 template <class K, int D>
@@ -228,73 +244,79 @@ bool George<K, D>::correct(std::uint32_t i, std::size_t nbase) {
       return false;
     }
     ++rounds_;
-    // (3) connectivity from the base (cavity_'s first nbase elements): the
-    // members reached from it are marked reached_ during the search, those
-    // left at in_ are excluded, and the reached ones are in_ again.
-    queue_.assign(cavity_.begin(), cavity_.begin() + static_cast<std::ptrdiff_t>(nbase));
-    for (std::size_t q = 0; q < queue_.size(); ++q)
-      for (int f = 0; f < V; ++f) {
-        const std::uint32_t t = Mesh<D>::simplex_of(mesh_.neighbour(queue_[q], f));
-        if (mesh_.mark(t) == in_) {
-          mesh_.set_mark(t, reached_);
-          queue_.push_back(t);
+    // (3) connectivity from the base (cavity_'s first nbase elements).  Step 2
+    // grew the cavity by adjacency from the base, so it is connected in the
+    // first round; after a removal, the members reached from the base are
+    // marked reached_ during the search, those left at in_ are excluded, and
+    // the reached ones are in_ again.
+    if (round > 0) {
+      queue_.assign(cavity_.begin(), cavity_.begin() + static_cast<std::ptrdiff_t>(nbase));
+      for (std::size_t q = 0; q < queue_.size(); ++q)
+        for (int f = 0; f < V; ++f) {
+          const std::uint32_t t = Mesh<D>::simplex_of(mesh_.neighbour(queue_[q], f));
+          if (mesh_.mark(t) == in_) {
+            mesh_.set_mark(t, reached_);
+            queue_.push_back(t);
+          }
         }
-      }
-    const bool unreached = queue_.size() != cavity_.size();
-    if (unreached)
-      for (std::uint32_t t : cavity_)
-        if (mesh_.mark(t) == in_) {
-          exclude(t);
-          ++removed_connectivity_;
-        }
-    for (std::size_t q = nbase; q < queue_.size(); ++q) mesh_.set_mark(queue_[q], in_);
-    if (unreached) {
-      cavity_.erase(std::remove_if(cavity_.begin() + static_cast<std::ptrdiff_t>(nbase), cavity_.end(),
-                                   [&](std::uint32_t t) { return !member(t); }),
-                    cavity_.end());
-      corrected = true;
-    }
-    // (3) boundary faces, (4) their volumes.
-    bool changed = false;
-    records_.clear();
-    rec_src_.clear();
-    const std::size_t ncav = cavity_.size();
-    for (std::size_t c = 0; c < ncav; ++c) {
-      const std::uint32_t s = cavity_[c];
-      for (int f = 0; f < V; ++f) {
-        if (!member(s)) break;  // removed while visiting its faces
-        const std::uint32_t enc = mesh_.neighbour(s, f);
-        const std::uint32_t t = Mesh<D>::simplex_of(enc);
-        if (member(t)) continue;
-        const Face vol = face_volume(s, f, enc, p);
-        if (vol == Face::positive) {
-          records_.push_back(boundary_record<D>(mesh_, s, f, i, enc));
-          rec_src_.push_back(s);
-          continue;
-        }
-        changed = true;
-        if (vol == Face::zero && !mesh_.is_ghost(t) && mesh_.mark(t) != excl_) {
-          mesh_.set_mark(t, in_);  // the element behind the face
-          cavity_.push_back(t);
-          ++added_zero_;
-          continue;
-        }
-        if (vol == Face::zero) ++zero_not_addable_;
-        if (mesh_.mark(s) == base_) {
-          fail("point " + std::to_string(i) + ": the correction would remove a base element (" +
-               (K::exact ? "a bug: the kernel is exact)" : "inconsistent orientations)"));
-          return false;
-        }
-        exclude(s);
-        ++removed_visibility_;
+      const bool unreached = queue_.size() != cavity_.size();
+      if (unreached)
+        for (std::uint32_t t : cavity_)
+          if (mesh_.mark(t) == in_) {
+            exclude(t);
+            ++removed_connectivity_;
+          }
+      for (std::size_t q = nbase; q < queue_.size(); ++q) mesh_.set_mark(queue_[q], in_);
+      if (unreached) {
+        cavity_.erase(std::remove_if(cavity_.begin() + static_cast<std::ptrdiff_t>(nbase), cavity_.end(),
+                                     [&](std::uint32_t t) { return !member(t); }),
+                      cavity_.end());
+        corrected = true;
       }
     }
-    if (changed) {
-      cavity_.erase(std::remove_if(cavity_.begin() + static_cast<std::ptrdiff_t>(nbase), cavity_.end(),
-                                   [&](std::uint32_t t) { return !member(t); }),
-                    cavity_.end());
-      corrected = true;
-      continue;  // (5)
+    // (3) boundary faces, (4) their volumes.  In the first round, step 2's
+    // faces are these, in this order; if they are all positive nothing
+    // changes, and otherwise the scan below starts over from the same state.
+    if (round > 0 || !first_round_positive(i)) {
+      bool changed = false;
+      records_.clear();
+      for (std::size_t c = 0, ncav = cavity_.size(); c < ncav; ++c) {
+        const std::uint32_t s = cavity_[c];
+        for (int f = 0; f < V; ++f) {
+          if (!member(s)) break;  // removed while visiting its faces
+          const std::uint32_t enc = mesh_.neighbour(s, f);
+          const std::uint32_t t = Mesh<D>::simplex_of(enc);
+          if (member(t)) continue;
+          const BoundaryRecord<D> r = boundary_record<D>(mesh_, s, f, i, enc);
+          const Face vol = face_volume(r, p);
+          if (vol == Face::positive) {
+            records_.push_back(r);
+            continue;
+          }
+          changed = true;
+          if (vol == Face::zero && !mesh_.is_ghost(t) && mesh_.mark(t) != excl_) {
+            mesh_.set_mark(t, in_);  // the element behind the face
+            cavity_.push_back(t);
+            ++added_zero_;
+            continue;
+          }
+          if (vol == Face::zero) ++zero_not_addable_;
+          if (mesh_.mark(s) == base_) {
+            fail("point " + std::to_string(i) + ": the correction would remove a base element (" +
+                 (K::exact ? "a bug: the kernel is exact)" : "inconsistent orientations)"));
+            return false;
+          }
+          exclude(s);
+          ++removed_visibility_;
+        }
+      }
+      if (changed) {
+        cavity_.erase(std::remove_if(cavity_.begin() + static_cast<std::ptrdiff_t>(nbase), cavity_.end(),
+                                     [&](std::uint32_t t) { return !member(t); }),
+                      cavity_.end());
+        corrected = true;
+        continue;  // (5)
+      }
     }
     // (6) nv == ns: no cavity vertex off the boundary faces.
     if (vmark_.size() < npts_ + 1) vmark_.resize(npts_ + 1, 0);
@@ -366,16 +388,18 @@ bool George<K, D>::insert(std::uint32_t i) {
   }
   stamp_ += 5;
   base_ = stamp_;
-  in_ = stamp_ + 1;
+  in_ = stamp_ + 1;  // consecutive: member()
   out_ = stamp_ + 2;
   excl_ = stamp_ + 3;
   reached_ = stamp_ + 4;  // step 3's search only
 
-  // (1) the base.
+  // (1) the base.  The walk has taken the orientation of every facet of the
+  // simplex it ends in: with no zero among them, that simplex alone holds p.
   cavity_.clear();
   mesh_.set_mark(loc.simplex, base_);
   cavity_.push_back(loc.simplex);
-  for (std::size_t c = 0; c < cavity_.size(); ++c) {
+  const bool alone = loc.end == Located::End::inside && loc.zeros == 0;
+  for (std::size_t c = 0; c < cavity_.size() && !alone; ++c) {
     const std::uint32_t s = cavity_[c];
     const bool ghost = mesh_.is_ghost(s);
     if (loc.end == Located::End::inside && ghost) continue;
@@ -396,19 +420,23 @@ bool George<K, D>::insert(std::uint32_t i) {
   const std::size_t nbase = cavity_.size();
   base_total_ += nbase;
 
-  // (2) the approximate cavity.
+  // (2) the approximate cavity, and its boundary faces.
+  faces_.clear();
   for (std::size_t c = 0; c < cavity_.size(); ++c) {
     const std::uint32_t s = cavity_[c];
     for (int f = 0; f < V; ++f) {
       const std::uint32_t t = Mesh<D>::simplex_of(mesh_.neighbour(s, f));
       const std::uint32_t m = mesh_.mark(t);
-      if (m == base_ || m == in_ || m == out_) continue;
-      if (approx_conflict(t, p)) {
-        mesh_.set_mark(t, in_);
-        cavity_.push_back(t);
-      } else {
+      if (m == base_ || m == in_) continue;
+      if (m != out_) {
+        if (approx_conflict(t, p)) {
+          mesh_.set_mark(t, in_);
+          cavity_.push_back(t);
+          continue;
+        }
         mesh_.set_mark(t, out_);
       }
+      faces_.push_back(Mesh<D>::encode(s, f));
     }
   }
   approx_total_ += cavity_.size();
@@ -427,7 +455,6 @@ bool George<K, D>::insert(std::uint32_t i) {
     fail("point " + std::to_string(i) + ": " + err);
     return false;
   }
-  for (std::uint32_t s : restar_.created()) store_sphere(s);
   last_ = first;
   return true;
 }
@@ -437,11 +464,9 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   TriangulationResult res;
   const std::size_t n = pts.size();
   mesh_.clear();
-  spheres_.clear();
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
   if (!init.found) return res;
   mesh_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
-  spheres_.reserve(D == 2 ? 2 * n + 16 : (27 * n) / 4 + 64);
   if (opt_.enclosing_box) {
     auto corners = enclosing_box_corners<D>(pts);
     if (!corners || !snap_box_corners<K, D>(k_, pts, *corners)) {
@@ -456,13 +481,11 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
     pts_ = box_pts_.data();
     npts_ = box_pts_.size();
     const auto fin = build_box_mesh<K, D>(k_, mesh_, pts_, static_cast<std::uint32_t>(n));
-    for (std::uint32_t s : fin) store_sphere(s);
     last_ = fin[0];
   } else {
     pts_ = pts.data();
     npts_ = n;
     last_ = build_initial_mesh<D>(mesh_, init.ids);
-    store_sphere(last_);
     merged_.start(n, init.ids);
   }
 
@@ -492,13 +515,11 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
       {"removed_for_connectivity", removed_connectivity_},
       {"removed_for_enclosed_vertex", removed_enclosed_},
       {"mesh_slots", mesh_.slots()},
-      {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_.bytes_reserved() + spheres_.bytes_reserved()},
+      {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_.bytes_reserved()},
   };
   cavity_sizes_.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (mesh() is then
-  // empty); the simplices of the enclosing box's corners are left out. The
-  // spheres go first: the result is not to coexist with them.
-  spheres_.release();
+  // empty); the simplices of the enclosing box's corners are left out.
   if (res.outcome == RunResult::Outcome::ok)
     res.simplices = mesh_.take_finite_simplices([&](const std::uint32_t* v) {
       const bool keep = std::all_of(v, v + V, [&](std::uint32_t id) { return id < n; });
