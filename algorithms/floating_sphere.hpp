@@ -22,6 +22,9 @@
 // and r^2 = |u|^2.
 #pragma once
 #include <array>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "predicates/point.hpp"
 
@@ -33,9 +36,63 @@ struct Circumsphere {
   double r2 = 0;
 };
 
-// The circumcentre relative to v0 (u above).
+#if defined(__SSE2__)
+// The 3D offset u with the same IEEE operations, in the same order, as the
+// plain formula below, two lanes at a time (a packed operation rounds each
+// lane as its scalar twin would; no fused multiply-add).  For a vector x
+// kept as the pair (x0, x1) and x2: cross(x, y)'s first two components are
+// (x1, x2) * (y2, y0) - (x2, x0) * (y1, y2), its third x0 y1 - x1 y0.
+inline Point3 circumcentre_offset_sse2(const Point3& o, const Point3& p1, const Point3& p2, const Point3& p3) {
+  struct Vec {
+    __m128d xy, z;       // (x0, x1), (x2, x2)
+    __m128d hi, lo, sw;  // (x1, x2), (x2, x0), (x1, x0)
+  };
+  const __m128d oxy = _mm_loadu_pd(o.data()), oz = _mm_set1_pd(o[2]);
+  auto vec = [&](const Point3& q) {
+    Vec x;
+    x.xy = _mm_sub_pd(_mm_loadu_pd(q.data()), oxy);
+    x.z = _mm_sub_pd(_mm_set1_pd(q[2]), oz);
+    x.hi = _mm_unpackhi_pd(x.xy, x.z);
+    x.lo = _mm_unpacklo_pd(x.z, x.xy);
+    x.sw = _mm_shuffle_pd(x.xy, x.xy, 1);
+    return x;
+  };
+  struct Cross {
+    __m128d xy, z;  // z in the low lane
+  };
+  auto cross = [](const Vec& x, const Vec& y) {
+    const __m128d m = _mm_mul_pd(x.xy, y.sw);  // (x0 y1, x1 y0)
+    return Cross{_mm_sub_pd(_mm_mul_pd(x.hi, y.lo), _mm_mul_pd(x.lo, y.hi)),
+                 _mm_sub_sd(m, _mm_unpackhi_pd(m, m))};
+  };
+  const Vec a = vec(p1), b = vec(p2), c = vec(p3);
+  const Cross bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
+  // (|a|^2, |b|^2) and (|c|^2, a.bc), each ((x0 y0 + x1 y1) + x2 y2).
+  auto dot2 = [](__m128d x0, __m128d y0, __m128d x1, __m128d y1, __m128d x2, __m128d y2) {
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, y0), _mm_mul_pd(x1, y1)), _mm_mul_pd(x2, y2));
+  };
+  const __m128d ab0 = _mm_unpacklo_pd(a.xy, b.xy), ab1 = _mm_unpackhi_pd(a.xy, b.xy),
+                ab2 = _mm_unpacklo_pd(a.z, b.z);
+  const __m128d a2b2 = dot2(ab0, ab0, ab1, ab1, ab2, ab2);
+  const __m128d c2d = dot2(_mm_unpacklo_pd(c.xy, a.xy), _mm_unpacklo_pd(c.xy, bc.xy), _mm_unpackhi_pd(c.xy, a.xy),
+                           _mm_unpackhi_pd(c.xy, bc.xy), _mm_unpacklo_pd(c.z, a.z), _mm_unpacklo_pd(c.z, bc.z));
+  const __m128d a2 = _mm_unpacklo_pd(a2b2, a2b2), b2 = _mm_unpackhi_pd(a2b2, a2b2),
+                c2 = _mm_unpacklo_pd(c2d, c2d);
+  const __m128d dot = _mm_unpackhi_pd(c2d, c2d);
+  const __m128d d = _mm_add_pd(dot, dot);  // 2 x: exact, as 2 * x
+  auto num = [&](__m128d x, __m128d y, __m128d z) {
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(a2, x), _mm_mul_pd(b2, y)), _mm_mul_pd(c2, z));
+  };
+  Point3 u;
+  _mm_storeu_pd(u.data(), _mm_div_pd(num(bc.xy, ca.xy, ab.xy), d));
+  _mm_store_sd(&u[2], _mm_div_sd(num(bc.z, ca.z, ab.z), d));
+  return u;
+}
+#endif
+
+// The circumcentre relative to v0 (u above), one operation at a time.
 template <int D>
-Point<D> circumcentre_offset(const std::array<const Point<D>*, D + 1>& v) {
+Point<D> circumcentre_offset_plain(const std::array<const Point<D>*, D + 1>& v) {
   const Point<D>& o = *v[0];
   if constexpr (D == 2) {
     const double ax = (*v[1])[0] - o[0], ay = (*v[1])[1] - o[1];
@@ -64,6 +121,14 @@ Point<D> circumcentre_offset(const std::array<const Point<D>*, D + 1>& v) {
     for (int j = 0; j < 3; ++j) u[j] = (a2 * bc[j] + b2 * ca[j] + c2 * ab[j]) / d;
     return u;
   }
+}
+
+template <int D>
+Point<D> circumcentre_offset(const std::array<const Point<D>*, D + 1>& v) {
+#if defined(__SSE2__)
+  if constexpr (D == 3) return circumcentre_offset_sse2(*v[0], *v[1], *v[2], *v[3]);
+#endif
+  return circumcentre_offset_plain<D>(v);
 }
 
 // The sphere of centre c = v0 + u through v0, r^2 = |u|^2.

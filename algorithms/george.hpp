@@ -122,6 +122,7 @@ class George {
   bool insert(std::uint32_t i);
   bool correct(std::uint32_t i, std::size_t nbase);
   bool approx_conflict(std::uint32_t t, const Point<D>& p);
+  bool other_conflict(std::uint32_t t, const Point<D>& p) const;
   Face face_volume(const BoundaryRecord<D>& r, const Point<D>& p) const;
   bool first_round_positive(std::uint32_t i);
   // base_ and in_ are consecutive stamps: one unsigned comparison.
@@ -157,6 +158,19 @@ class George {
 template <class K, int D>
 bool George<K, D>::approx_conflict(std::uint32_t t, const Point<D>& p) {
   const std::uint32_t* w = mesh_.vertices(t);
+  if (w[D] != kGhost && !opt_.exact_sphere) [[likely]] {
+    ++float_tests_;
+    std::array<const Point<D>*, V> v;
+    for (int j = 0; j < V; ++j) v[j] = &pts_[w[j]];
+    return inside_floating_sphere<D>(v, p);
+  }
+  return other_conflict(t, p);
+}
+
+// Ghosts, and the exact sphere test.
+template <class K, int D>
+bool George<K, D>::other_conflict(std::uint32_t t, const Point<D>& p) const {
+  const std::uint32_t* w = mesh_.vertices(t);
   if (w[D] == kGhost) {
     if (!opt_.exact_sphere) return orient_with<K, D>(k_, mesh_, pts_, t, D, p) == Sign::positive;
     if constexpr (D == 2) {
@@ -167,16 +181,10 @@ bool George<K, D>::approx_conflict(std::uint32_t t, const Point<D>& p) {
       return ghost_conflict(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[d], p);
     }
   }
-  if (opt_.exact_sphere) {
-    if constexpr (D == 2)
-      return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], p) == Sign::positive;
-    else
-      return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[w[3]], p) == Sign::positive;
-  }
-  ++float_tests_;
-  std::array<const Point<D>*, V> v;
-  for (int j = 0; j < V; ++j) v[j] = &pts_[w[j]];
-  return inside_floating_sphere<D>(v, p);
+  if constexpr (D == 2)
+    return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], p) == Sign::positive;
+  else
+    return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[w[3]], p) == Sign::positive;
 }
 
 // The sign of the new simplex r (face r.slot of cavity element s joined to p,
