@@ -187,8 +187,9 @@ bool George<K, D>::other_conflict(std::uint32_t t, const Point<D>& p) const {
     return inside_pos(k_, pts_[w[0]], pts_[w[1]], pts_[w[2]], pts_[w[3]], p) == Sign::positive;
 }
 
-// The sign of the new simplex r (face r.slot of cavity element s joined to p,
-// r.outside the encoded facet across it).  See the header for ghost faces.
+// The sign of the new simplex r: a boundary face of the cavity joined to p,
+// which sits in slot r.slot; r.outside is the encoded facet across the face.
+// See the header for ghost faces.
 template <class K, int D>
 typename George<K, D>::Face George<K, D>::face_volume(const BoundaryRecord<D>& r, const Point<D>& p) const {
   auto as_face = [](Sign o) { return o == Sign::positive ? Face::positive : o == Sign::negative ? Face::negative : Face::zero; };
@@ -200,13 +201,12 @@ typename George<K, D>::Face George<K, D>::face_volume(const BoundaryRecord<D>& r
   }
   // A new ghost (p, ridge, ghost): u is the ghost behind the face.
   const int f = r.slot;
-  const std::uint32_t outside = r.outside;
-  const std::uint32_t u = Mesh<D>::simplex_of(outside);
+  const std::uint32_t u = Mesh<D>::simplex_of(r.outside);
   const Sign o = orient_with<K, D>(k_, mesh_, pts_, u, D, p);
   if (o == Sign::positive) return Face::negative;  // u's hull facet seen: the new hull would be reflex
   if (o == Sign::negative) return Face::positive;
   // p in the plane (line) of u's hull facet: valid iff strictly across the ridge from it.
-  const int fu = Mesh<D>::facet_of(outside);  // u's vertex not on the ridge (u's slot D holds the ghost)
+  const int fu = Mesh<D>::facet_of(r.outside);  // u's vertex not on the ridge (u's slot D holds the ghost)
   const Point<D>& y = pts_[mesh_.vertex(u, fu)];
   if constexpr (D == 2) {
     const Point2& b = pts_[r.v[1 - f]];  // the ridge is one vertex
