@@ -67,7 +67,7 @@ struct RunOptions {
   // rotated or permuted evenly to start at its smallest index, the list sorted,
   // so that equal triangulations are equal files, whatever produced them.
   bool canonical = false;
-  bool exact_sphere = false;   // george: exact circumsphere test (default: stored floating spheres)
+  bool exact_sphere = false;   // george: exact circumsphere test (default: the floating sphere test)
   bool enclosing_box = false;  // george: the paper's enclosing box instead of the ghost vertex
 };
 

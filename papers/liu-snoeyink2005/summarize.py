@@ -26,7 +26,7 @@ def must_succeed(row):
     """Pairs whose contract is a valid Delaunay triangulation on any input."""
     if row["tool"] in ("cgal-epick", "cgal-epeck"):
         return True
-    # George with stored floating spheres (and with the enclosing box) promises
+    # George with floating spheres (and with the enclosing box) promises
     # validity only (George 1997, claim 1): checked apart, by must_be_valid.
     algo = row["algorithm"]
     exact_algo = not algo.startswith("george") or algo == "george+exact-sphere"
