@@ -50,6 +50,7 @@
 #include "predicates/float_filter.hpp"
 #include "predicates/integer_grid.hpp"
 #include "predicates/kernel.hpp"
+#include "predicates/sos_walk.hpp"
 #include "predicates/wide_int.hpp"
 
 namespace dlab {
@@ -236,21 +237,23 @@ struct Reduced {
   std::array<std::array<std::int64_t, D>, N> q;
   std::uint64_t magnitudes;
 };
+// One pass takes the differences and the OR of their absolute values: |x| has
+// x's trailing zeros, so that OR's trailing zeros are g; and |x| >> g = |x >> g|
+// for x a multiple of 2^g, so the quotients' OR is that OR shifted by g.
 template <std::size_t N, std::size_t D>
 Reduced<N, D> reduce(std::array<std::array<std::int64_t, D>, N> q) {
   std::uint64_t bits = 0;
   for (std::size_t i = 0; i + 1 < N; ++i)
-    for (std::size_t j = 0; j < D; ++j) bits |= static_cast<std::uint64_t>(q[i][j] -= q[N - 1][j]);
+    for (std::size_t j = 0; j < D; ++j) {
+      const std::int64_t x = q[i][j] -= q[N - 1][j];  // |x| <= 2^B - 1 < 2^62
+      bits |= static_cast<std::uint64_t>(x < 0 ? -x : x);
+    }
   q[N - 1] = {};
   if (bits == 0) return {q, 0};
   const int g = std::countr_zero(bits);
-  std::uint64_t magnitudes = 0;
   for (std::size_t i = 0; i + 1 < N; ++i)
-    for (std::size_t j = 0; j < D; ++j) {
-      q[i][j] >>= g;  // |q| <= 2^B - 1 < 2^62
-      magnitudes |= static_cast<std::uint64_t>(q[i][j] < 0 ? -q[i][j] : q[i][j]);
-    }
-  return {q, magnitudes};
+    for (std::size_t j = 0; j < D; ++j) q[i][j] >>= g;
+  return {q, bits >> g};
 }
 
 // The sign of det<B>(q) (q's base last), computed on reduce(q): the
@@ -260,14 +263,41 @@ Reduced<N, D> reduce(std::array<std::array<std::int64_t, D>, N> q) {
 // 2^Tiny - 1, det<Tiny> in int64 alone (Tiny <= the kInt64 bound of det): a
 // lattice fitted to the grid has g about B - (its bits).
 template <int B, int Small, int Tiny, std::size_t N, std::size_t D, class Det>
-Sign reduced_sign(std::array<std::array<std::int64_t, D>, N> indices, Det det) {
+Sign reduced_sign(const Reduced<N, D>& r, Det det) {
   static_assert(Tiny <= Small && Small <= B);
-  const auto [q, magnitudes] = reduce(indices);
-  if (magnitudes == 0) return Sign::zero;  // every point is the base
+  if (r.magnitudes == 0) return Sign::zero;  // every point is the base
   if constexpr (Tiny < Small)
-    if (magnitudes < (std::uint64_t{1} << Tiny)) return sign(det.template operator()<Tiny>(q));
-  if (magnitudes < (std::uint64_t{1} << Small)) return sign(det.template operator()<Small>(q));
-  return sign(det.template operator()<B>(q));
+    if (r.magnitudes < (std::uint64_t{1} << Tiny)) return sign(det.template operator()<Tiny>(r.q));
+  if (r.magnitudes < (std::uint64_t{1} << Small)) return sign(det.template operator()<Small>(r.q));
+  return sign(det.template operator()<B>(r.q));
+}
+template <int B, int Small, int Tiny, std::size_t N, std::size_t D, class Det>
+Sign reduced_sign(const std::array<std::array<std::int64_t, D>, N>& indices, Det det) {
+  return reduced_sign<B, Small, Tiny>(reduce(indices), det);
+}
+
+// perturbed<K>'s walk (predicates/sos_walk.hpp) on the D+2 reduced vectors of
+// r (the query last), every coordinate at most 2^Tiny - 1 in magnitude. The
+// walk asks orientations of D+1 of them, whose differences are then at most
+// 2^(Tiny+1) - 2: orient<Tiny+1>, in int64 (asserted). Where the vectors are
+// the points' grid indices (a translation and a positive scale of the
+// points), their lexicographic order and each orientation's sign are the
+// points', so the walk answers as it does on the points.
+template <int Tiny, std::size_t N, std::size_t D>
+Sign reduced_walk(const Reduced<N, D>& r) {
+  static_assert(N == D + 2);
+  using P = std::array<std::int64_t, D>;
+  std::array<const P*, N> pts;
+  for (std::size_t i = 0; i < N; ++i) pts[i] = &r.q[i];
+  return sos::walk<int{D}, P>(pts, [](const std::array<const P*, D + 1>& t) {
+    if constexpr (D == 2) {
+      static_assert(std::is_same_v<typename Budget<Tiny + 1>::Minor2, std::int64_t>);
+      return sign(orient2d<Tiny + 1>(*t[0], *t[1], *t[2]));
+    } else {
+      static_assert(std::is_same_v<typename Budget<Tiny + 1>::Minor3, std::int64_t>);
+      return sign(orient3d<Tiny + 1>(*t[0], *t[1], *t[2], *t[3]));
+    }
+  });
 }
 
 }  // namespace intdet
@@ -358,6 +388,16 @@ class BasicIntegerKernel {
   //   difference on an axis is 0). Every nonzero |difference| lies in [1,
   //   2^62), inside each of its range guards: it never declines for range.
   static constexpr std::array<std::string_view, 2> stage_names{"filter", "integer"};
+  //
+  // incircle_sos_staged / insphere_sos_staged, for perturbed<K>
+  // (predicates/perturbed.hpp): the same stages, and where the integer stage
+  // finds an exact zero on grid points on its int64 path, the symbolic
+  // perturbation's walk on the same reduced indices (intdet::reduced_walk),
+  // reported as stage walk_stage (perturbed<K>'s "perturbation"). On
+  // lattices a third of the in-sphere tests are such zeros; walking on the
+  // points instead re-derives the indices for each orientation. Any other
+  // zero is exact and left to perturbed<K>'s own walk.
+  static constexpr unsigned char walk_stage = stage_names.size();
   // The budgets of the integer stage's narrow path (intdet::reduced_sign).
   static constexpr int kSmall2 = B2 < 30 ? B2 : 30, kSmall3 = B3 < 24 ? B3 : 24;
   // Their int64 paths, per determinant (intdet::kInt64*).
@@ -382,13 +422,10 @@ class BasicIntegerKernel {
         g2_.index(c));
   }
   Staged incircle_staged(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
-    constexpr auto det = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
-    if (grid_points_only2_)
-      return first_then([&](auto rest) { return AdaptiveKernel::incircle_first_then(a, b, c, d, rest); },
-                        [&](const auto&... x) { return integer_stage<B2, kSmall2, kTinyIC>(det, g2_.grid_index(x)...); });
-    return filter_then<B2, kSmall2, kTinyIC>(
-        [](const auto&... x) { return FloatFilter{}.incircle(x...); }, det, g2_.index(a), g2_.index(b),
-        g2_.index(c), g2_.index(d));
+    return incircle_stages<false>(a, b, c, d);
+  }
+  Staged incircle_sos_staged(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    return incircle_stages<true>(a, b, c, d);
   }
   Staged orient3d_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
     constexpr auto det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
@@ -401,13 +438,11 @@ class BasicIntegerKernel {
   }
   Staged insphere_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                          const Point3& e) const {
-    constexpr auto det = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
-    if (grid_points_only3_)
-      return first_then([&](auto rest) { return AdaptiveKernel::insphere_first_then(a, b, c, d, e, rest); },
-                        [&](const auto&... x) { return integer_stage<B3, kSmall3, kTinyIS>(det, g3_.grid_index(x)...); });
-    return filter_then<B3, kSmall3, kTinyIS>(
-        [](const auto&... x) { return FloatFilter{}.insphere(x...); }, det, g3_.index(a), g3_.index(b),
-        g3_.index(c), g3_.index(d), g3_.index(e));
+    return insphere_stages<false>(a, b, c, d, e);
+  }
+  Staged insphere_sos_staged(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                             const Point3& e) const {
+    return insphere_stages<true>(a, b, c, d, e);
   }
 
   Sign orient2d(const Point2& a, const Point2& b, const Point2& c) const {
@@ -458,10 +493,38 @@ class BasicIntegerKernel {
   }
 
  private:
-  // The integer stage on indices q (the base last).
-  template <int B, int Small, int Tiny, class Det, class... I>
+  template <bool Walk>
+  Staged incircle_stages(const Point2& a, const Point2& b, const Point2& c, const Point2& d) const {
+    constexpr auto det = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
+    if (grid_points_only2_)
+      return first_then([&](auto rest) { return AdaptiveKernel::incircle_first_then(a, b, c, d, rest); },
+                        [&](const auto&... x) { return integer_stage<B2, kSmall2, kTinyIC, Walk>(det, g2_.grid_index(x)...); });
+    return filter_then<B2, kSmall2, kTinyIC>(
+        [](const auto&... x) { return FloatFilter{}.incircle(x...); }, det, g2_.index(a), g2_.index(b),
+        g2_.index(c), g2_.index(d));
+  }
+  template <bool Walk>
+  Staged insphere_stages(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                         const Point3& e) const {
+    constexpr auto det = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
+    if (grid_points_only3_)
+      return first_then([&](auto rest) { return AdaptiveKernel::insphere_first_then(a, b, c, d, e, rest); },
+                        [&](const auto&... x) { return integer_stage<B3, kSmall3, kTinyIS, Walk>(det, g3_.grid_index(x)...); });
+    return filter_then<B3, kSmall3, kTinyIS>(
+        [](const auto&... x) { return FloatFilter{}.insphere(x...); }, det, g3_.index(a), g3_.index(b),
+        g3_.index(c), g3_.index(d), g3_.index(e));
+  }
+
+  // The integer stage on indices q (the base last). With Walk, an exact zero
+  // on the int64 path goes on to the walk on the same reduced indices.
+  template <int B, int Small, int Tiny, bool Walk = false, class Det, class... I>
   static Staged integer_stage(Det det, const I&... q) {
-    return {intdet::reduced_sign<B, Small, Tiny>(std::array{q...}, det), 1};
+    const auto r = intdet::reduce(std::array{q...});
+    const Sign s = intdet::reduced_sign<B, Small, Tiny>(r, det);
+    if constexpr (Walk)
+      if (s == Sign::zero && r.magnitudes != 0 && r.magnitudes < (std::uint64_t{1} << Tiny))
+        return {intdet::reduced_walk<Tiny>(r), walk_stage};
+    return {s, 1};
   }
   // first(rest): AdaptiveKernel's first stage on grid points, calling rest
   // (the integer stage, on their indices) where it cannot decide.
@@ -472,7 +535,7 @@ class BasicIntegerKernel {
       integer = true;
       return rest(x...);
     });
-    return {s.sign, static_cast<unsigned char>(integer ? 1 : 0)};
+    return {s.sign, static_cast<unsigned char>(integer ? s.stage : 0)};
   }
   // FloatFilter on the rounded index differences, then the integer stage.
   template <int B, int Small, int Tiny, class Filter, class Det, class... I>

@@ -62,7 +62,8 @@
 // compares with perturbed<MpKernel>). On other inputs the certificate fails at
 // the reference point's x and y and K answers as before.
 // Other kernels keep their own arithmetic (mp is the reference; integer answers
-// for its snapped points), so kernel comparisons stay fair.
+// for its snapped points, and takes the walk on its own grid indices where it
+// can: K::insphere_sos_staged, integer_kernel.hpp), so kernel comparisons stay fair.
 #pragma once
 #include <array>
 #include <cmath>
@@ -72,66 +73,18 @@
 
 #include "predicates/kernel.hpp"
 #include "predicates/small_integer.hpp"
+#include "predicates/sos_walk.hpp"
 #include "predicates/stages.hpp"
 
 namespace dlab {
 
 struct AdaptiveKernel;  // predicates/adaptive_kernel.hpp
 
-// Lexicographic comparison, exact (plain double comparisons).
-template <int D>
-constexpr bool lex_less(const Point<D>& a, const Point<D>& b) {
-  for (int i = 0; i < D; ++i) {
-    if (a[i] < b[i]) return true;
-    if (b[i] < a[i]) return false;
-  }
-  return false;
-}
-
 // Exact: q strictly between p and r, given that p, q, r are collinear.
 template <int D>
 constexpr bool collinear_between(const Point<D>& p, const Point<D>& q, const Point<D>& r) {
   return (lex_less<D>(p, q) && lex_less<D>(q, r)) || (lex_less<D>(r, q) && lex_less<D>(q, p));
 }
-
-namespace sos {
-
-// Indices 0..N-1 of pts sorted by decreasing lexicographic order (stable).
-template <int D, std::size_t N>
-constexpr std::array<int, N> by_decreasing_rank(const std::array<const Point<D>*, N>& pts) {
-  std::array<int, N> idx{};
-  for (std::size_t i = 0; i < N; ++i) idx[i] = static_cast<int>(i);
-  for (std::size_t i = 1; i < N; ++i)  // insertion sort: N <= 5
-    for (std::size_t j = i; j > 0 && lex_less<D>(*pts[idx[j - 1]], *pts[idx[j]]); --j) {
-      const int t = idx[j];
-      idx[j] = idx[j - 1];
-      idx[j - 1] = t;
-    }
-  return idx;
-}
-
-// The perturbed sign of the lifted determinant of D+2 points (the last one is
-// the query) once its exact value is zero. `orient` takes D+1 point pointers.
-template <int D, class Orient>
-Sign walk(const std::array<const Point<D>*, D + 2>& pts, Orient&& orient) {
-  constexpr int query = D + 1;
-  const auto order = by_decreasing_rank<D, D + 2>(pts);
-  for (int i : order) {
-    std::array<const Point<D>*, D + 1> simplex{};
-    for (int j = 0; j <= D; ++j) simplex[j] = pts[j];
-    Sign s;
-    if (i == query) {
-      s = -orient(simplex);
-    } else {
-      simplex[i] = pts[query];
-      s = orient(simplex);
-    }
-    if (s != Sign::zero) return s;
-  }
-  return Sign::zero;  // only when the preconditions fail (all points collinear/coplanar)
-}
-
-}  // namespace sos
 
 template <class K>
 struct perturbed {
@@ -280,6 +233,8 @@ struct perturbed {
     if constexpr (lattice) {  // exact sign and perturbation in one go (small_integer.hpp)
       s = base.incircle_first_then(a, b, c, d,
                                  [](const auto&... p) { return incircle_lattice(p...); });
+    } else if constexpr (walks_itself2) {
+      s = base.incircle_sos_staged(a, b, c, d);
     } else {
       s = dlab::incircle_staged(base, a, b, c, d);
     }
@@ -300,6 +255,8 @@ struct perturbed {
     if constexpr (lattice) {
       s = base.insphere_first_then(a, b, c, d, e,
                                  [](const auto&... p) { return insphere_lattice(p...); });
+    } else if constexpr (walks_itself3) {
+      s = base.insphere_sos_staged(a, b, c, d, e);
     } else {
       s = dlab::insphere_staged(base, a, b, c, d, e);
     }
@@ -311,6 +268,19 @@ struct perturbed {
   // Kernels exact for every double input, for which the small-integer
   // evaluation may answer in K's place (see the top of this file).
   static constexpr bool lattice = std::is_same_v<K, AdaptiveKernel>;
+  // Kernels that take the walk on their own representation of the points
+  // where they can (integer: on grid indices, see integer_kernel.hpp): their
+  // stage walk_stage is the walk's answer, and any zero they return is exact.
+  static constexpr bool walks_itself2 = requires(const K& k, const Point2& p) {
+    { k.incircle_sos_staged(p, p, p, p) } -> std::same_as<Staged>;
+  };
+  static constexpr bool walks_itself3 = requires(const K& k, const Point3& p) {
+    { k.insphere_sos_staged(p, p, p, p, p) } -> std::same_as<Staged>;
+  };
+  static_assert([] {
+    if constexpr (walks_itself2 || walks_itself3) return K::walk_stage == perturbation_stage;
+    return true;
+  }());
   // Kernels with their own coplanar predicates (integer: see integer_kernel.hpp).
   static constexpr bool projecting = requires(const K& k, const Point3& p) {
     { k.projected_orient2d(p, p, p, 0) } -> std::same_as<Sign>;

@@ -1,0 +1,158 @@
+// The integer kernel's own symbolic-perturbation walk (integer_kernel.hpp,
+// incircle_sos_staged / insphere_sos_staged, intdet::reduced_walk): on grid
+// points whose lifted determinant is exactly zero on the int64 path, the walk
+// runs on the reduced grid indices. Checked against perturbed<GmpKernel>,
+// whose walk orders and orients the points themselves with GMP:
+//  - random lattice subsets, scaled by 2^g and translated (most tests zero);
+//  - cospherical / cocircular sets whose reduced indices sit at the int64
+//    path's edge (largest magnitude 2^T - 1: walked; 2^T: left to perturbed's
+//    walk), and far beyond it (magnitudes near 2^43, where the int64
+//    orientations of the walk would overflow if the path were taken).
+#include <algorithm>
+#include <array>
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <rapidcheck.h>
+#include <rapidcheck/catch.h>
+#include <span>
+#include <vector>
+
+#include "predicates/integer_kernel.hpp"
+#include "predicates/mp_kernel.hpp"
+#include "predicates/perturbed.hpp"
+
+using namespace dlab;
+
+namespace {
+
+const perturbed<GmpKernel> pmp;  // GMP alone (MpKernel shares intdet with the integer kernel)
+constexpr unsigned char walked = IntegerKernel::walk_stage;
+
+// The integer kernel fitted to pts with the grid-points promise, as the
+// driver makes it (variants/driver.hpp): every point must be a grid point.
+template <int D>
+IntegerKernel fitted(std::span<const Point<D>> pts) {
+  IntegerKernel k = IntegerKernel::fit<D>(pts);
+  k.fit_static_filter(pts);
+  REQUIRE(k.grid_points_only(D));
+  return k;
+}
+
+Staged own_walk(const IntegerKernel& k, const std::vector<Point3>& p) {
+  return k.insphere_sos_staged(p[0], p[1], p[2], p[3], p[4]);
+}
+Staged own_walk(const IntegerKernel& k, const std::vector<Point2>& p) {
+  return k.incircle_sos_staged(p[0], p[1], p[2], p[3]);
+}
+Sign reference(const std::vector<Point3>& p) { return pmp.insphere(p[0], p[1], p[2], p[3], p[4]); }
+Sign reference(const std::vector<Point2>& p) { return pmp.incircle(p[0], p[1], p[2], p[3]); }
+Sign perturbed_integer(const IntegerKernel& k, const std::vector<Point3>& p) {
+  return perturbed<IntegerKernel>(k).insphere(p[0], p[1], p[2], p[3], p[4]);
+}
+Sign perturbed_integer(const IntegerKernel& k, const std::vector<Point2>& p) {
+  return perturbed<IntegerKernel>(k).incircle(p[0], p[1], p[2], p[3]);
+}
+
+// Every ordering of p's points (the walk's order is their lexicographic rank,
+// not their position), each checked against GMP; returns how many the
+// kernel's own walk decided.
+template <int D>
+int check_all_orders(std::vector<Point<D>> p) {
+  const IntegerKernel k = fitted<D>(p);
+  int count = 0;
+  std::vector<int> idx(p.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+  do {
+    std::vector<Point<D>> q;
+    for (int i : idx) q.push_back(p[static_cast<std::size_t>(i)]);
+    const Staged s = own_walk(k, q);
+    const Sign want = reference(q);
+    CHECK(perturbed_integer(k, q) == want);
+    if (s.stage == walked) {
+      CHECK(s.sign == want);
+      ++count;
+    }
+  } while (std::next_permutation(idx.begin(), idx.end()));
+  return count;
+}
+
+// Five points of the sphere of radius r about the origin; the base (last) is
+// (r, 0, 0), so the reduced differences are at most 2r and one of them is r.
+std::vector<Point3> sphere_points(double r) {
+  return {{-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {r, 0, 0}};
+}
+std::vector<Point2> circle_points(double r) { return {{-r, 0}, {0, r}, {0, -r}, {r, 0}}; }
+
+}  // namespace
+
+// (One property per test case: Catch runs the case once per rc::prop section.)
+TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 3D lattice subsets",
+          "[integer][perturbed][rc]") {
+  int walked3 = 0, total3 = 0;
+  rc::prop("3D: 5 points of {0,1,2}^3 times 2^g, translated", [&] {
+    const int g = *rc::gen::inRange(0, 40);
+    const double scale = std::ldexp(1.0, g), shift = std::ldexp(*rc::gen::inRange(-1000, 1000), g);
+    std::vector<Point3> p;
+    for (int i = 0; i < 5; ++i) {
+      Point3 x;
+      for (double& c : x) c = shift + scale * *rc::gen::inRange(0, 3);
+      p.push_back(x);
+    }
+    const IntegerKernel k = fitted<3>(p);
+    const Staged s = own_walk(k, p);
+    const Sign want = reference(p);
+    RC_ASSERT(perturbed_integer(k, p) == want);
+    if (s.stage == walked) {
+      RC_ASSERT(s.sign == want);
+      ++walked3;
+    }
+    ++total3;
+  });
+  // Degenerate often enough that the walk itself is exercised.
+  CHECK(walked3 > total3 / 20);
+}
+
+TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 2D lattice subsets",
+          "[integer][perturbed][rc]") {
+  int walked2 = 0;
+  rc::prop("2D: 4 points of {0,1,2}^2 times 2^g, translated", [&] {
+    const int g = *rc::gen::inRange(0, 40);
+    const double scale = std::ldexp(1.0, g), shift = std::ldexp(*rc::gen::inRange(-1000, 1000), g);
+    std::vector<Point2> p;
+    for (int i = 0; i < 4; ++i) p.push_back({shift + scale * *rc::gen::inRange(0, 3), shift + scale * *rc::gen::inRange(0, 3)});
+    const IntegerKernel k = fitted<2>(p);
+    const Staged s = own_walk(k, p);
+    const Sign want = reference(p);
+    RC_ASSERT(perturbed_integer(k, p) == want);
+    if (s.stage == walked) {
+      RC_ASSERT(s.sign == want);
+      ++walked2;
+    }
+  });
+  CHECK(walked2 > 10);
+}
+
+TEST_CASE("the integer kernel's walk at the edge of its int64 path", "[integer][perturbed]") {
+  // insphere's int64 path takes reduced magnitudes below 2^11
+  // (kInt64InSphere), incircle's below 2^14 (kInt64InCircle). With the
+  // radius r odd nothing divides out, and the largest difference is 2r.
+  constexpr double t3 = 1 << intdet::kInt64InSphere, t2 = 1 << intdet::kInt64InCircle;
+  // r = 2^(T-1) - 1: the magnitudes' OR is 2^T - 1, inside: every order walked.
+  CHECK(check_all_orders<3>(sphere_points(t3 / 2 - 1)) == 120);
+  CHECK(check_all_orders<2>(circle_points(t2 / 2 - 1)) == 24);
+  // r = 2^(T-1) + 1: 2r = 2^T + 2, outside: the kernel returns the exact zero
+  // (stage "integer") and perturbed<K>'s own walk decides. In 3D the orders
+  // whose base (last) is (0, 0, r), the one point without its antipode among
+  // the five, have differences of at most r alone: those 24 are walked.
+  const std::vector<Point3> s3 = sphere_points(t3 / 2 + 1);
+  const std::vector<Point2> s2 = circle_points(t2 / 2 + 1);
+  const Staged z3 = own_walk(fitted<3>(s3), s3), z2 = own_walk(fitted<2>(s2), s2);
+  CHECK((z3.sign == Sign::zero && z3.stage == 1));
+  CHECK((z2.sign == Sign::zero && z2.stage == 1));
+  CHECK(check_all_orders<3>(s3) == 24);
+  CHECK(check_all_orders<2>(s2) == 0);
+  // Far outside (r = 2^42 + 1, where the walk's int64 orientations would
+  // overflow): still GMP's answers.
+  CHECK(check_all_orders<3>(sphere_points(0x1p42 + 1)) == 0);
+  CHECK(check_all_orders<2>(circle_points(0x1p42 + 1)) == 0);
+}
