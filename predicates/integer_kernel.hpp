@@ -277,19 +277,29 @@ Sign reduced_sign(const std::array<std::array<std::int64_t, D>, N>& indices, Det
 }
 
 // perturbed<K>'s walk (predicates/sos_walk.hpp) on the D+2 reduced vectors of
-// r (the query last), every coordinate at most 2^Tiny - 1 in magnitude. The
-// walk asks orientations of D+1 of them, whose differences are then at most
-// 2^(Tiny+1) - 2: orient<Tiny+1>, in int64 (asserted). Where the vectors are
-// the points' grid indices (a translation and a positive scale of the
-// points), their lexicographic order and each orientation's sign are the
-// points', so the walk answers as it does on the points.
+// r (the query last), every coordinate at most 2^Tiny - 1 in magnitude. Where
+// the vectors are the points' grid indices (a translation and a positive
+// scale of the points), their lexicographic order and each orientation's sign
+// are the points', so the walk answers as it does on the points.
+//  - The order: each coordinate plus 2^Tiny lies in [1, 2^(Tiny+1) - 1], so
+//    the coordinates side by side in fields of Tiny + 1 bits, x highest, make
+//    a key whose integer order is the lexicographic one (D (Tiny + 1) <= 45
+//    bits, asserted).
+//  - The orientations: of D+1 of the vectors, whose differences are at most
+//    2^(Tiny+1) - 2: orient<Tiny+1>, in int64 (asserted).
 template <int Tiny, std::size_t N, std::size_t D>
 Sign reduced_walk(const Reduced<N, D>& r) {
-  static_assert(N == D + 2);
+  static_assert(N == D + 2 && D * (Tiny + 1) <= 45);
   using P = std::array<std::int64_t, D>;
   std::array<const P*, N> pts;
-  for (std::size_t i = 0; i < N; ++i) pts[i] = &r.q[i];
-  return sos::walk<int{D}, P>(pts, [](const std::array<const P*, D + 1>& t) {
+  std::array<std::int64_t, N> key;
+  for (std::size_t i = 0; i < N; ++i) {
+    pts[i] = &r.q[i];
+    key[i] = 0;
+    for (std::size_t j = 0; j < D; ++j) key[i] = (key[i] << (Tiny + 1)) + (r.q[i][j] + (std::int64_t{1} << Tiny));
+  }
+  const auto order = sos::by_decreasing<N>([&](int i, int j) { return key[i] < key[j]; });
+  return sos::walk_in_order<int{D}, P>(pts, order, [](const std::array<const P*, D + 1>& t) {
     if constexpr (D == 2) {
       static_assert(std::is_same_v<typename Budget<Tiny + 1>::Minor2, std::int64_t>);
       return sign(orient2d<Tiny + 1>(*t[0], *t[1], *t[2]));

@@ -156,3 +156,34 @@ TEST_CASE("the integer kernel's walk at the edge of its int64 path", "[integer][
   CHECK(check_all_orders<3>(sphere_points(0x1p42 + 1)) == 0);
   CHECK(check_all_orders<2>(circle_points(0x1p42 + 1)) == 0);
 }
+
+TEST_CASE("reduced_walk orders the reduced vectors as lex_less does, at the path's extremes",
+          "[integer][perturbed][rc]") {
+  // The two largest points share x = 2^T - 1 and have y one apart, the larger
+  // y with z = -(2^T - 1), the other with a large positive z: lex_less ranks
+  // them by y alone, so a key whose z field spilled into y's would swap them.
+  // The other two points and the order of the four are random; the query is
+  // the origin. Reference: sos::walk with lex_less on the same vectors.
+  constexpr int T = intdet::kInt64InSphere;
+  constexpr std::int64_t m = (std::int64_t{1} << T) - 1;
+  using P = std::array<std::int64_t, 3>;
+  rc::prop("3D, T = kInt64InSphere", [&] {
+    const std::int64_t y = *rc::gen::inRange<std::int64_t>(-m, m);
+    std::array<P, 4> v{P{m, y + 1, -m}, P{m, y, *rc::gen::inRange<std::int64_t>(2, m + 1)}};
+    for (int i = 2; i < 4; ++i)
+      v[static_cast<std::size_t>(i)] = {*rc::gen::inRange<std::int64_t>(-m, m), *rc::gen::inRange<std::int64_t>(-m, m + 1),
+                                        *rc::gen::inRange<std::int64_t>(-m, m + 1)};
+    const auto perm = *rc::gen::elementOf(std::vector<std::array<int, 4>>{
+        {0, 1, 2, 3}, {1, 0, 2, 3}, {2, 0, 3, 1}, {3, 2, 1, 0}, {1, 3, 0, 2}, {2, 3, 1, 0}});
+    intdet::Reduced<5, 3> r{};
+    for (int i = 0; i < 4; ++i) r.q[static_cast<std::size_t>(i)] = v[static_cast<std::size_t>(perm[static_cast<std::size_t>(i)])];
+    for (const auto& w : r.q)
+      for (std::int64_t x : w) r.magnitudes |= static_cast<std::uint64_t>(x < 0 ? -x : x);
+    std::array<const P*, 5> pts;
+    for (int i = 0; i < 5; ++i) pts[static_cast<std::size_t>(i)] = &r.q[static_cast<std::size_t>(i)];
+    const Sign want = sos::walk<3, P>(pts, [](const std::array<const P*, 4>& t) {
+      return intdet::sign(intdet::orient3d<T + 1>(*t[0], *t[1], *t[2], *t[3]));
+    });
+    RC_ASSERT(intdet::reduced_walk<T>(r) == want);
+  });
+}
