@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdint>
 #include <rapidcheck.h>
 #include <rapidcheck/catch.h>
@@ -85,27 +86,30 @@ std::vector<Point2> circle_points(double r) { return {{-r, 0}, {0, r}, {0, -r}, 
 
 }  // namespace
 
+// D + 2 points of {0,1,2}^D times 2^g, translated (a generator inside
+// rc::prop): checked against GMP; returns whether the kernel's walk decided.
+template <int D>
+bool lattice_subset_case() {
+  const int g = *rc::gen::inRange(0, 40);
+  const double scale = std::ldexp(1.0, g), shift = std::ldexp(*rc::gen::inRange(-1000, 1000), g);
+  std::vector<Point<D>> p(D + 2);
+  for (Point<D>& x : p)
+    for (double& c : x) c = shift + scale * *rc::gen::inRange(0, 3);
+  const IntegerKernel k = fitted<D>(p);
+  const Staged s = own_walk(k, p);
+  const Sign want = reference(p);
+  RC_ASSERT(perturbed_integer(k, p) == want);
+  if (s.stage != walked) return false;
+  RC_ASSERT(s.sign == want);
+  return true;
+}
+
 // (One property per test case: Catch runs the case once per rc::prop section.)
 TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 3D lattice subsets",
           "[integer][perturbed][rc]") {
   int walked3 = 0, total3 = 0;
   rc::prop("3D: 5 points of {0,1,2}^3 times 2^g, translated", [&] {
-    const int g = *rc::gen::inRange(0, 40);
-    const double scale = std::ldexp(1.0, g), shift = std::ldexp(*rc::gen::inRange(-1000, 1000), g);
-    std::vector<Point3> p;
-    for (int i = 0; i < 5; ++i) {
-      Point3 x;
-      for (double& c : x) c = shift + scale * *rc::gen::inRange(0, 3);
-      p.push_back(x);
-    }
-    const IntegerKernel k = fitted<3>(p);
-    const Staged s = own_walk(k, p);
-    const Sign want = reference(p);
-    RC_ASSERT(perturbed_integer(k, p) == want);
-    if (s.stage == walked) {
-      RC_ASSERT(s.sign == want);
-      ++walked3;
-    }
+    walked3 += lattice_subset_case<3>();
     ++total3;
   });
   // Degenerate often enough that the walk itself is exercised.
@@ -115,20 +119,7 @@ TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 3D lattice sub
 TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 2D lattice subsets",
           "[integer][perturbed][rc]") {
   int walked2 = 0;
-  rc::prop("2D: 4 points of {0,1,2}^2 times 2^g, translated", [&] {
-    const int g = *rc::gen::inRange(0, 40);
-    const double scale = std::ldexp(1.0, g), shift = std::ldexp(*rc::gen::inRange(-1000, 1000), g);
-    std::vector<Point2> p;
-    for (int i = 0; i < 4; ++i) p.push_back({shift + scale * *rc::gen::inRange(0, 3), shift + scale * *rc::gen::inRange(0, 3)});
-    const IntegerKernel k = fitted<2>(p);
-    const Staged s = own_walk(k, p);
-    const Sign want = reference(p);
-    RC_ASSERT(perturbed_integer(k, p) == want);
-    if (s.stage == walked) {
-      RC_ASSERT(s.sign == want);
-      ++walked2;
-    }
-  });
+  rc::prop("2D: 4 points of {0,1,2}^2 times 2^g, translated", [&] { walked2 += lattice_subset_case<2>(); });
   CHECK(walked2 > 10);
 }
 
