@@ -4,10 +4,11 @@
 // runs on the reduced grid indices. Checked against perturbed<GmpKernel>,
 // whose walk orders and orients the points themselves with GMP:
 //  - random lattice subsets, scaled by 2^g and translated (most tests zero);
-//  - cospherical / cocircular sets whose reduced indices sit at the int64
-//    path's edge (largest magnitude 2^T - 1: walked; 2^T: left to perturbed's
-//    walk), and far beyond it (magnitudes near 2^43, where the int64
-//    orientations of the walk would overflow if the path were taken).
+//  - cospherical / cocircular sets at the int64 path's edge, in every order
+//    (radius 2^(T-1) - 1: every reduced index below 2^T, walked; 2^(T-1) + 1:
+//    past it, left to perturbed's walk), and far beyond it (indices near
+//    2^43, where the walk's int64 orientations would overflow);
+//  - reduced vectors whose order a key with narrower fields would swap.
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -84,8 +85,6 @@ std::vector<Point3> sphere_points(double r) {
 }
 std::vector<Point2> circle_points(double r) { return {{-r, 0}, {0, r}, {0, -r}, {r, 0}}; }
 
-}  // namespace
-
 // D + 2 points of {0,1,2}^D times 2^g, translated (a generator inside
 // rc::prop): checked against GMP; returns whether the kernel's walk decided.
 template <int D>
@@ -103,6 +102,8 @@ bool lattice_subset_case() {
   RC_ASSERT(s.sign == want);
   return true;
 }
+
+}  // namespace
 
 // (One property per test case: Catch runs the case once per rc::prop section.)
 TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 3D lattice subsets",
