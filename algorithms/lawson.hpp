@@ -52,6 +52,7 @@
 #include "algorithms/locate.hpp"
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
+#include "algorithms/simplex_guard.hpp"
 #include "algorithms/triangulation_result.hpp"
 
 namespace dlab {
@@ -85,6 +86,10 @@ class Lawson {
   // Point location: the walk from the last insertion (default) or a scan of
   // every live simplex (algorithms/locate.hpp); variants/driver.hpp sets it.
   void set_location(LocationScheme s) { location_ = s; }
+  // mesh() stays whole after run() (tests and the fuzzer read it); otherwise
+  // run() hands the mesh's memory over to the result, and the 3D mesh keeps
+  // no mark array.
+  void keep_mesh() { keep_mesh_ = true; }
 
  private:
   bool insert(std::uint32_t i);
@@ -105,12 +110,12 @@ class Lawson {
   Restar<D> restar_;
   std::vector<std::uint32_t> cavity_;
   std::vector<BoundaryRecord<D>> records_;
-  std::uint32_t stamp_ = 0;
   std::uint64_t ins_ext_ = 0, ext_facets_ = 0, ins_on_hull_ = 0;
   std::uint32_t last_ = 0;
   std::uint64_t flip_budget_ = 0;
   WalkRng rng_;
   LocationScheme location_ = LocationScheme::walk;
+  bool keep_mesh_ = false;
   std::string message_;
   std::uint64_t walk_steps_ = 0, scan_tests_ = 0, duplicates_ = 0, ins_1_ = 0, ins_2_ = 0, ins_n_ = 0,
                 retries_ = 0;
@@ -181,6 +186,7 @@ template <class K, int D>
 bool Lawson<K, D>::insert(std::uint32_t i) {
   const Point<D>& p = pts_[i];
   const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
+  const bool from_ghost = mesh_.is_ghost(last_);
   const Located loc = locate<K, D>(location_, k_, mesh_, pts_, last_, p, bound, rng_);
   walk_steps_ += loc.steps;
   scan_tests_ += loc.tests;
@@ -209,9 +215,14 @@ bool Lawson<K, D>::insert(std::uint32_t i) {
     const Simplex all = mesh_.simplex(s);
     if (!split(&s, 1, all.data(), V, i, ins_1_)) return false;
   } else {
+    // With exact signs the walk's count is the number of facets p lies on:
+    // each facet it crossed into s has p strictly beyond, save the one a walk
+    // from a ghost enters by, which it tested only for "strictly beyond".
+    const bool none_zero = K::exact && loc.zeros == 0 && !(location_ == LocationScheme::walk && from_ghost);
     int zeros[V], nz = 0;
-    for (int j = 0; j < V; ++j)
-      if (orient_with<K, D>(k_, mesh_, pts_, s, j, p) == Sign::zero) zeros[nz++] = j;
+    if (!none_zero)
+      for (int j = 0; j < V; ++j)
+        if (orient_with<K, D>(k_, mesh_, pts_, s, j, p) == Sign::zero) zeros[nz++] = j;
     if (nz >= D) {  // on a vertex: a duplicate
       for (int j = 0; j < V; ++j) {
         const std::uint32_t w = mesh_.vertex(s, j);
@@ -271,35 +282,36 @@ bool Lawson<K, D>::insert(std::uint32_t i) {
 // (flips.hpp), like every other facet, by the flips that follow.
 template <class K, int D>
 bool Lawson<K, D>::connect_exterior(std::uint32_t i, std::uint32_t start) {
+  static_assert(D == 3);
+  // The marks are TopBitMarks' (the mesh keeps no mark array): in = the
+  // visible ghosts, out = their neighbours found not visible; every neighbour
+  // word is read through code(), and the bits go before the re-star.
+  constexpr std::uint32_t in = TopBitMarks::kIn, out = TopBitMarks::kOut;
   const Point<D>& p = pts_[i];
-  if (stamp_ >= 0xFFFFFFF0u) {
-    for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
-    stamp_ = 0;
-  }
-  stamp_ += 2;
-  const std::uint32_t in = stamp_, out = stamp_ + 1;
   cavity_.clear();
   records_.clear();
-  mesh_.set_mark(start, in);
+  TopBitMarks::set_mark(mesh_, start, in);
   cavity_.push_back(start);
   for (std::size_t c = 0; c < cavity_.size(); ++c) {  // each ghost enters once: bounded
     const std::uint32_t s = cavity_[c];
     for (int f = 0; f < V; ++f) {
-      const std::uint32_t enc = mesh_.neighbour(s, f);
+      const std::uint32_t enc = TopBitMarks::code(mesh_.neighbour(s, f));
       const std::uint32_t t = Mesh<D>::simplex_of(enc);
-      const std::uint32_t m = mesh_.mark(t);
+      const std::uint32_t m = TopBitMarks::mark(mesh_, t);
       if (m == in) continue;
       if (m != out) {
         if (f != D && mesh_.is_ghost(t) && orient_with<K, D>(k_, mesh_, pts_, t, D, p) == Sign::positive) {
-          mesh_.set_mark(t, in);
+          TopBitMarks::set_mark(mesh_, t, in);
           cavity_.push_back(t);
           continue;
         }
-        mesh_.set_mark(t, out);
+        TopBitMarks::set_mark(mesh_, t, out);
       }
       records_.push_back(boundary_record<D>(mesh_, s, f, i, enc));
     }
   }
+  for (std::uint32_t s : cavity_) TopBitMarks::unmark(mesh_, s, in);
+  for (const BoundaryRecord<D>& r : records_) TopBitMarks::unmark(mesh_, Mesh<D>::simplex_of(r.outside), out);
   std::string err;
   const std::uint32_t first = restar_.star(mesh_, cavity_, records_, err, !K::exact);
   if (!err.empty()) {
@@ -370,6 +382,10 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   const std::size_t n = pts.size();
   merged_.assign(n, kNotProcessed);
   mesh_.clear();
+  if constexpr (D == 3) {  // connect_exterior's marks are TopBitMarks'
+    if (!keep_mesh_) mesh_.without_marks();
+    mesh_.limit_slots(TopBitMarks::kMaxSlots);
+  }
   flip_budget_ = flip_bound(n, K::exact);
 
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
@@ -401,10 +417,6 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
           break;
         }
     }
-    res.simplices.reserve(mesh_.count_finite() * V);
-    mesh_.for_each_finite([&](std::uint32_t s) {
-      for (int j = 0; j < V; ++j) res.simplices.push_back(mesh_.vertex(s, j));
-    });
   }
   res.merged_into = merged_;
   const FlipCounts& c = flipper_.counts;
@@ -437,6 +449,10 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   res.counters.push_back({"retry_rounds", retries_});
   res.counters.push_back({"mesh_slots", mesh_.slots()});
   res.counters.push_back({"mesh_bytes_reserved", mesh_.bytes_reserved()});
+  // Last, as it hands the mesh's memory over to the result (mesh() is then
+  // empty), unless the mesh is kept.
+  if (res.outcome == RunResult::Outcome::ok)
+    res.simplices = keep_mesh_ ? Mesh<D>(mesh_).take_finite_simplices() : mesh_.take_finite_simplices();
   return res;
 }
 

@@ -322,19 +322,21 @@ std::vector<std::uint32_t> Mesh<D>::take_finite_simplices(Keep keep) {
   std::vector<std::uint32_t>().swap(free_);
   nfree_ = 0;
 #if defined(__linux__)
-  const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  // Whole pages of d_ strictly below `end` that are not yet released.
-  std::uintptr_t released = (reinterpret_cast<std::uintptr_t>(d_.data()) + page - 1) / page * page;
+  // Whole huge pages of d_ strictly below `end` that are not yet released.
+  // Only whole ones: a part of a huge page released splits it, at a cost
+  // per release that was 4 % of a 3D Lawson run of 10^6 points with 4 KiB
+  // releases (papers/triangulation_costs.md, session 26).
+  std::uintptr_t released = huge_page_range(reinterpret_cast<std::uintptr_t>(d_.data()), 0).first;
   auto release_below = [&](const std::uint32_t* end) {
-    const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / page * page;
+    const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / kHugePage * kHugePage;
     if (to <= released) return;
     madvise(reinterpret_cast<void*>(released), to - released, MADV_DONTNEED);
     released = to;
   };
 #endif
-  // Slots between two releases (128 KiB in 3D): the result written before a
-  // release (64 KiB) is all that the peak gains.
-  constexpr std::uint32_t kChunk = 1u << 12;
+  // Slots between two releases (one huge page): the result written before a
+  // release (at most half as much) is all that the peak gains.
+  constexpr std::uint32_t kChunk = kHugePage / (S * sizeof(std::uint32_t));
   for (std::uint32_t s = 0; s < slots(); ++s) {
     if (alive(s) && !is_ghost(s) && keep(vertices(s))) out.insert(out.end(), vertices(s), vertices(s) + V);
 #if defined(__linux__)

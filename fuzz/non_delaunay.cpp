@@ -28,6 +28,7 @@ std::vector<std::uint32_t> non_delaunay_start(const std::vector<Point<D>>& pts, 
   constexpr int V = D + 1;
   using Simplex = typename Mesh<D>::Simplex;
   Lawson<K, D> dt;
+  dt.keep_mesh();
   const TriangulationResult t = dt.run(std::span<const Point<D>>(pts));
   if (t.outcome != RunResult::Outcome::ok) return {};
   Mesh<D> m = dt.mesh();

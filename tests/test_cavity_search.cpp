@@ -3,8 +3,8 @@
 // search, with the boundary records in counterclockwise order around the
 // cavity, so that each record's edge ends where the next one's begins (what
 // Restar<2>::link_chain relies on to link the new triangles without a table).
-// Checked on cavities of new points in a Delaunay mesh (Lawson's, whose mesh()
-// outlives run()), inside the hull and outside it (ghost triangles).
+// Checked on cavities of new points in a Delaunay mesh (Lawson's, kept by
+// keep_mesh()), inside the hull and outside it (ghost triangles).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -41,6 +41,7 @@ TEST_CASE("cavity search 2D: depth first gives the breadth-first cavity, its bou
   const std::size_t n = 3000;
   std::vector<Point<2>> pts = gen::uniform<2>(n, 11);
   Lawson<K, 2> dt;
+  dt.keep_mesh();
   REQUIRE(dt.run(std::span<const Point<2>>(pts)).outcome == RunResult::Outcome::ok);
   Mesh<2> m = dt.mesh();
   const K k;
@@ -104,6 +105,7 @@ TEST_CASE("cavity search 3D: marks in the neighbour words' top bits give the sta
   const std::size_t n = 2000;
   std::vector<Point<3>> pts = gen::uniform<3>(n, 21);
   Lawson<K, 3> dt;
+  dt.keep_mesh();
   REQUIRE(dt.run(std::span<const Point<3>>(pts)).outcome == RunResult::Outcome::ok);
   Mesh<3> m = dt.mesh();
   auto words = [](const Mesh<3>& mesh) {
