@@ -5,8 +5,9 @@
 // Counting never changes an answer: every call forwards to K and returns K's
 // sign. The counters live in one PredicateCounters object shared by all copies
 // of a counted<K> (copies of the kernel, e.g. inside an algorithm, keep counting
-// into the same place); each call costs one or two plain integer increments
-// through a pointer. Not thread-safe: one counted<K> family per thread.
+// into the same place); each call costs one plain integer increment through a
+// pointer (a staged call counts at its stage only; the total is the sum).
+// Not thread-safe: one counted<K> family per thread.
 //
 // Names (stable, in this order): for each of orient2d, incircle, orient3d,
 // insphere: "<pred>", then "<pred>.<stage>" for each stage of K when K is
@@ -32,8 +33,13 @@ struct PredicateCounters {
   static constexpr int max_stages = 8;
   static constexpr std::array<const char*, predicates> names{
       "orient2d", "incircle", "orient3d", "insphere", "coplanar_orientation", "coplanar_incircle"};
-  std::array<std::uint64_t, predicates> calls{};
+  std::array<std::uint64_t, predicates> calls{};  // unstaged calls
   std::array<std::array<std::uint64_t, max_stages>, predicates> stage{};
+  std::uint64_t total(int p) const {
+    std::uint64_t t = calls[p];
+    for (std::uint64_t c : stage[p]) t += c;
+    return t;
+  }
 };
 
 template <class K>
@@ -151,7 +157,7 @@ struct counted {
   Counters counters() const {
     Counters out;
     auto emit = [&](int p, bool staged) {
-      out.emplace_back(PredicateCounters::names[p], stats->calls[p]);
+      out.emplace_back(PredicateCounters::names[p], stats->total(p));
       if (staged)
         for (std::size_t s = 0; s < stage_names.size(); ++s)
           out.emplace_back(std::string(PredicateCounters::names[p]) + "." +
@@ -171,8 +177,10 @@ struct counted {
 
  private:
   Staged count(int p, Staged s) const {
-    ++stats->calls[p];
-    if (s.stage < PredicateCounters::max_stages) ++stats->stage[p][s.stage];
+    if (s.stage < PredicateCounters::max_stages)
+      ++stats->stage[p][s.stage];
+    else
+      ++stats->calls[p];
     return s;
   }
 };
