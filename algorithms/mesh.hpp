@@ -323,9 +323,9 @@ std::vector<std::uint32_t> Mesh<D>::take_finite_simplices(Keep keep) {
   nfree_ = 0;
 #if defined(__linux__)
   // Whole huge pages of d_ strictly below `end` that are not yet released.
-  // Only whole ones: a part of a huge page released splits it, at a cost
-  // per release that was 4 % of a 3D Lawson run of 10^6 points with 4 KiB
-  // releases (papers/triangulation_costs.md, session 26).
+  // Only whole ones: releasing part of a huge page splits it, and with 4 KiB
+  // releases the 3D Bowyer-Watson of 10^6 points ran 12 % longer on a VM
+  // (papers/triangulation_costs.md, session 26).
   std::uintptr_t released = huge_page_range(reinterpret_cast<std::uintptr_t>(d_.data()), 0).first;
   auto release_below = [&](const std::uint32_t* end) {
     const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) / kHugePage * kHugePage;
@@ -334,9 +334,10 @@ std::vector<std::uint32_t> Mesh<D>::take_finite_simplices(Keep keep) {
     released = to;
   };
 #endif
-  // Slots between two releases (one huge page): the result written before a
-  // release (at most half as much) is all that the peak gains.
-  constexpr std::uint32_t kChunk = kHugePage / (S * sizeof(std::uint32_t));
+  // Slots between two looks for a huge page read whole (128 KiB): the
+  // result written before a release (half the slots read, at most a huge page
+  // and a look's worth) is all that the peak gains.
+  constexpr std::uint32_t kChunk = 1u << 12;
   for (std::uint32_t s = 0; s < slots(); ++s) {
     if (alive(s) && !is_ghost(s) && keep(vertices(s))) out.insert(out.end(), vertices(s), vertices(s) + V);
 #if defined(__linux__)
