@@ -44,6 +44,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/cavity.hpp"
@@ -418,7 +419,6 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
         }
     }
   }
-  res.merged_into = merged_;
   const FlipCounts& c = flipper_.counts;
   if constexpr (D == 2) {
     res.counters = {{"walk_steps", walk_steps_}, {"scan_tests", scan_tests_}, {"insert_1_3", ins_1_},
@@ -453,6 +453,7 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   // empty), unless the mesh is kept.
   if (res.outcome == RunResult::Outcome::ok)
     res.simplices = keep_mesh_ ? Mesh<D>(mesh_).take_finite_simplices() : mesh_.take_finite_simplices();
+  res.merged_into = std::move(merged_);  // after the mesh is gone: not part of the peak
   return res;
 }
 
