@@ -2,13 +2,19 @@
 // which the walk and the cavity searches touch all over: with 4 KiB pages
 // nearly every step to a slot not touched lately misses the TLB, and each
 // page is a fault of its own; a 2 MiB page covers 512 of them
-// (papers/triangulation_costs.md, session 23). Advice only: the kernel uses
-// huge pages where THP is enabled ("madvise" or "always") and it has them
-// free; nothing else changes, the results least of all. Elsewhere: nothing.
+// (papers/triangulation_costs.md, session 23). The run's other large arrays
+// (the points, the insertion order, the result) are written once each, but
+// each of their 4 KiB pages is a fault too, and on a virtual machine a fault
+// costs microseconds: there they were a fifth of a 2D run (session 27).
+// Advice only: the kernel uses huge pages where THP is enabled ("madvise" or
+// "always") and it has them free; nothing else changes, the results least of
+// all. Elsewhere: nothing.
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <utility>
+#include <vector>
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -33,6 +39,36 @@ inline void advise_huge_pages(const void* p, std::size_t bytes) {
 #else
   (void)p, (void)bytes;
 #endif
+}
+
+// v's elements moved into new room for n of them (n >= v.size()), whose
+// whole huge pages are advised before anything touches them.
+template <class T, class A>
+void move_to_huge_room(std::vector<T, A>& v, std::size_t n) {
+  std::vector<T, A> room(v.get_allocator());
+  room.reserve(n);
+  if (n * sizeof(T) >= kHugePage) advise_huge_pages(room.data(), n * sizeof(T));
+  room.insert(room.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+  v.swap(room);
+}
+
+// As v.reserve(n), in huge pages.
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& v, std::size_t n) {
+  if (n > v.capacity()) move_to_huge_room(v, n);
+}
+
+// As v.shrink_to_fit(), in huge pages.
+template <class T, class A>
+void shrink_huge(std::vector<T, A>& v) {
+  if (v.size() < v.capacity()) move_to_huge_room(v, v.size());
+}
+
+// v resized to n (new elements value-initialized) in huge pages.
+template <class T, class A>
+void resize_huge(std::vector<T, A>& v, std::size_t n) {
+  reserve_huge(v, n);
+  v.resize(n);
 }
 
 }  // namespace dlab

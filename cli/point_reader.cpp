@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "algorithms/huge_pages.hpp"
 #include "cli/mesh_formats.hpp"
 #include "cli/numbers.hpp"
 
@@ -140,9 +141,16 @@ double coordinate(std::string_view tok, const std::string& name, std::size_t lin
   return p.value;
 }
 
+// Grows as push_back does (doubling), in huge pages (algorithms/huge_pages.hpp).
+template <class T>
+void push_point(std::vector<T>& v, const T& p) {
+  if (v.size() == v.capacity()) reserve_huge(v, std::max<std::size_t>(64, 2 * v.capacity()));
+  v.push_back(p);
+}
+
 void add_point(PointSet& ps, const double* c) {
-  if (ps.dimension == 2) ps.p2.push_back({c[0], c[1]});
-  else ps.p3.push_back({c[0], c[1], c[2]});
+  if (ps.dimension == 2) push_point(ps.p2, {c[0], c[1]});
+  else push_point(ps.p3, {c[0], c[1], c[2]});
 }
 
 PointSet parse_plain(LineSplitter& lines, const std::string& name) {
@@ -277,8 +285,8 @@ PointSet read_points(std::istream& in, const std::string& name, bool node_format
   PointSet ps = node_format ? parse_node(lines, name) : parse_plain(lines, name);
   if (in.bad()) throw InputError(name + ": cannot read: input error");
   // The vectors grew by doubling: give the slack back before triangulating.
-  ps.p2.shrink_to_fit();
-  ps.p3.shrink_to_fit();
+  shrink_huge(ps.p2);
+  shrink_huge(ps.p3);
   return ps;
 }
 

@@ -37,6 +37,7 @@
 #include <malloc.h>
 #endif
 
+#include "algorithms/huge_pages.hpp"
 #include "algorithms/locate.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/counted.hpp"
@@ -151,7 +152,9 @@ void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, Run
   r.counters = std::move(t.counters);
   if (t.outcome != RunResult::Outcome::lower_dimensional) {
     // First occurrence: the smallest input index among the points merged into a vertex.
-    std::vector<std::uint32_t> rep(pts.size(), kNotProcessed);
+    std::vector<std::uint32_t> rep;
+    reserve_huge(rep, pts.size());
+    rep.assign(pts.size(), kNotProcessed);
     std::size_t distinct = 0, processed = 0;
     for (std::size_t i = 0; i < t.merged_into.size(); ++i) {
       const std::uint32_t v = t.merged_into[i];
@@ -217,8 +220,12 @@ RunResult run_dimension(std::vector<Point<D>>& input, const RunOptions& o, bool 
     r.max_snap_displacement = st.max_displacement;
   }
   std::vector<Point<D>>& pts = SnappingKernel<K, D> ? snapped : input;
-  if constexpr (StaticFilterKernel<K, D> && SeesGivenPointsOnly<Algo<K, D>>)
-    base.fit_static_filter(std::span<const Point<D>>(with_added_points<Algo, K, D>(pts)));
+  if constexpr (StaticFilterKernel<K, D> && SeesGivenPointsOnly<Algo<K, D>>) {
+    if constexpr (AddsPoints<Algo<K, D>, D>)
+      base.fit_static_filter(std::span<const Point<D>>(with_added_points<Algo, K, D>(pts)));
+    else  // no copy of the points
+      base.fit_static_filter(std::span<const Point<D>>(pts));
+  }
   // Predicate calls are always counted (design.md section 5, --stats).
   if (sos)
     run_kernel<Algo, counted<perturbed<K>>, D>(counted<perturbed<K>>(perturbed<K>(base)), pts, o, r);

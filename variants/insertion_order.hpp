@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/huge_pages.hpp"
 #include "predicates/point.hpp"
 
 namespace dlab {
@@ -48,7 +49,8 @@ template <class T, class Order>
 void apply_order(std::vector<T>& v, const Order& order, bool back, std::vector<bool>& done, bool in_place = false) {
   if (!in_place) {
     try {
-      std::vector<T> out(v.size());
+      std::vector<T> out;
+      resize_huge(out, v.size());
       for (std::size_t i = 0; i < v.size(); ++i) {
         if (back)
           out[order[i]] = v[i];
