@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithms/huge_pages.hpp"
+
 namespace dlab {
 
 template <int D>
@@ -143,7 +145,8 @@ class FacetTable {
     return static_cast<std::size_t>(h) & (slots_.size() - 1);
   }
   void grow() {
-    std::vector<Slot> old(slots_.size() * 2);
+    std::vector<Slot> old;
+    resize_huge(old, slots_.size() * 2);  // algorithms/huge_pages.hpp
     old.swap(slots_);
     used_ = 0;
     for (const Slot& s : old)

@@ -30,6 +30,7 @@
 #include <span>
 #include <vector>
 
+#include "algorithms/huge_pages.hpp"
 #include "algorithms/interval.hpp"
 #include "algorithms/node_frame.hpp"
 #include "predicates/point.hpp"
@@ -85,16 +86,20 @@ class KdTree {
     // big * scale_ in [0.5, 1), or as close as a representable power of two
     // allows (subnormal inputs: 2^1074 overflows; 2^1000 brings them to 2^-74).
     scale_ = std::ldexp(1.0, std::clamp(-e, -1000, 1000));
-    items_ = ids;
+    // Huge pages for the large arrays (algorithms/huge_pages.hpp).
+    items_.clear();
+    reserve_huge(items_, ids.size());
+    items_.assign(ids.begin(), ids.end());
+    reserve_huge(leaf_of_, pts.size());
     leaf_of_.assign(pts.size(), kNoNode);
     nodes_.clear();
-    nodes_.reserve(2 * (ids.size() / kLeaf + 1));
+    reserve_huge(nodes_, 2 * (ids.size() / kLeaf + 1));
     frame_of_.clear();
-    frame_of_.reserve(nodes_.capacity());
+    reserve_huge(frame_of_, nodes_.capacity());
     frames_.clear();
     if (!items_.empty()) build_node(pts, 0, static_cast<std::uint32_t>(items_.size()), kNoParent);
     share_rows(pts);
-    coords_.resize(items_.size());
+    resize_huge(coords_, items_.size());
     for (std::size_t k = 0; k < items_.size(); ++k) coords_[k] = pts[items_[k]];
   }
 

@@ -118,7 +118,7 @@ class Mesh {
   // no mark array (its owner keeps stamps of its own: TopBitMarks).
   void without_marks() {
     has_marks_ = false;
-    std::vector<std::uint32_t>().swap(mark_);
+    decltype(mark_)().swap(mark_);
   }
   // A lower limit than kMaxSlots: an owner's (TopBitMarks'), or a test's.
   void limit_slots(std::uint32_t n) { max_slots_ = std::min(n, kMaxSlots); }
@@ -305,7 +305,7 @@ class Mesh {
   }
   static std::size_t nb_index(std::uint32_t enc) { return std::size_t(enc >> 2) * S + V + (enc & 3u); }
   std::vector<std::uint32_t, CacheAligned<std::uint32_t>> d_;
-  std::vector<std::uint32_t> mark_;  // 3D's marks (2D: in the blocks)
+  std::vector<std::uint32_t, CacheAligned<std::uint32_t>> mark_;  // 3D's marks (2D: in the blocks)
   bool has_marks_ = true;            // 3D: false after without_marks()
   std::uint32_t max_slots_ = kMaxSlots;
   std::vector<std::uint32_t> free_;  // the free slots: free_[0, nfree_)
@@ -324,7 +324,7 @@ std::vector<std::uint32_t> Mesh<D>::take_finite_simplices(Keep keep) {
   if (out.capacity() * sizeof(std::uint32_t) > kHugePage)
     advise_huge_pages(out.data() + kHugePage / sizeof(std::uint32_t),
                       out.capacity() * sizeof(std::uint32_t) - kHugePage);
-  std::vector<std::uint32_t>().swap(mark_);
+  decltype(mark_)().swap(mark_);
   std::vector<std::uint32_t>().swap(free_);
   nfree_ = 0;
 #if defined(__linux__)

@@ -53,6 +53,7 @@
 #include "algorithms/cavity.hpp"
 #include "algorithms/cavity_histogram.hpp"
 #include "algorithms/cavity_search.hpp"
+#include "algorithms/huge_pages.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/locate.hpp"
 #include "algorithms/mesh.hpp"
@@ -475,7 +476,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
     for (const Worker& w : workers_)
       if (res.message.empty()) res.message = w.message;
   } else {
-    res.simplices.reserve(mesh_.count_finite() * V);
+    reserve_huge(res.simplices, mesh_.count_finite() * V);  // algorithms/huge_pages.hpp
     mesh_.for_each_finite([&](std::uint32_t s) {
       for (int j = 0; j < V; ++j) res.simplices.push_back(mesh_.vertex(s, j));
     });

@@ -76,6 +76,7 @@
 #include "algorithms/circumball.hpp"
 #include "algorithms/exact_flats.hpp"
 #include "algorithms/front.hpp"
+#include "algorithms/huge_pages.hpp"
 #include "algorithms/initial_simplex.hpp"
 #include "algorithms/interval.hpp"
 #include "algorithms/kd_tree.hpp"
@@ -971,19 +972,22 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
-  std::vector<std::uint32_t> merged(n, kNotProcessed);
+  std::vector<std::uint32_t> merged;
+  reserve_huge(merged, n);  // this and the run's other arrays: algorithms/huge_pages.hpp
+  merged.assign(n, kNotProcessed);
 
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
   if (!init.found) return res;
 
   // Duplicates: lexicographic sort; each group maps to its first id.
-  std::vector<std::uint32_t> order(n);
+  std::vector<std::uint32_t> order;
+  resize_huge(order, n);
   for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return pts[a] < pts[b] || (pts[a] == pts[b] && a < b);
   });
   std::vector<std::uint32_t> uniq;
-  uniq.reserve(n);
+  reserve_huge(uniq, n);
   for (std::size_t k = 0; k < n; ++k) {
     if (k > 0 && pts[order[k]] == pts[order[k - 1]]) {
       merged[order[k]] = merged[order[k - 1]];
@@ -1016,8 +1020,11 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     on_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
     off_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
   }
-  if constexpr (K::exact) plane_of_.assign(n, kNone);
-  out_.reserve(static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
+  if constexpr (K::exact) {
+    reserve_huge(plane_of_, n);
+    plane_of_.assign(n, kNone);
+  }
+  reserve_huge(out_, static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 
   const StartFacet<D> start = find_start_facet<D>(pts, uniq);
   bool ok = start.found;
