@@ -64,6 +64,16 @@ void shrink_huge(std::vector<T, A>& v) {
   if (v.size() < v.capacity()) move_to_huge_room(v, v.size());
 }
 
+// As v.assign(n, value), in huge pages.
+template <class T, class A>
+void assign_huge(std::vector<T, A>& v, std::size_t n, const T& value) {
+  if (n > v.capacity()) {
+    v.clear();
+    move_to_huge_room(v, n);
+  }
+  v.assign(n, value);
+}
+
 // v resized to n (new elements value-initialized) in huge pages.
 template <class T, class A>
 void resize_huge(std::vector<T, A>& v, std::size_t n) {

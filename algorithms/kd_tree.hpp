@@ -90,8 +90,7 @@ class KdTree {
     items_.clear();
     reserve_huge(items_, ids.size());
     items_.assign(ids.begin(), ids.end());
-    reserve_huge(leaf_of_, pts.size());
-    leaf_of_.assign(pts.size(), kNoNode);
+    assign_huge(leaf_of_, pts.size(), kNoNode);
     nodes_.clear();
     reserve_huge(nodes_, 2 * (ids.size() / kLeaf + 1));
     frame_of_.clear();

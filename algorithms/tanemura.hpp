@@ -973,8 +973,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   pts_ = pts.data();
   const std::size_t n = pts.size();
   std::vector<std::uint32_t> merged;
-  reserve_huge(merged, n);  // this and the run's other arrays: algorithms/huge_pages.hpp
-  merged.assign(n, kNotProcessed);
+  assign_huge(merged, n, kNotProcessed);  // this and the run's other arrays: algorithms/huge_pages.hpp
 
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
   if (!init.found) return res;
@@ -1020,10 +1019,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
     on_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
     off_flat_.assign(flats_.count() > 0 ? n : 0, ExactFlats<D>::kNone);
   }
-  if constexpr (K::exact) {
-    reserve_huge(plane_of_, n);
-    plane_of_.assign(n, kNone);
-  }
+  if constexpr (K::exact) assign_huge(plane_of_, n, kNone);
   reserve_huge(out_, static_cast<std::size_t>((D == 2 ? 2.0 : 6.6) * static_cast<double>(nu) + 16) * V);
 
   const StartFacet<D> start = find_start_facet<D>(pts, uniq);

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <utility>
 
+#include "algorithms/huge_pages.hpp"
 #include "predicates/filtered.hpp"
 #include "predicates/float_filter.hpp"
 #include "predicates/mp_kernel.hpp"
@@ -43,7 +44,9 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
 // slot.
 class IdTable {
  public:
-  explicit IdTable(std::size_t expected_entries) : slots_(expected_entries + expected_entries / 4 + 16, kEmpty) {}
+  explicit IdTable(std::size_t expected_entries) {
+    assign_huge(slots_, expected_entries + expected_entries / 4 + 16, kEmpty);  // algorithms/huge_pages.hpp
+  }
   // The stored id whose key equals the new one, or kNone after storing `id`.
   template <class Eq>
   std::uint32_t find_or_insert(std::uint64_t hash, std::uint32_t id, Eq&& equal) {
@@ -66,7 +69,8 @@ class IdTable {
   }
   std::size_t next(std::size_t i) const { return i + 1 < slots_.size() ? i + 1 : 0; }  // linear probing
   void grow() {
-    std::vector<std::uint64_t> old(2 * slots_.size(), kEmpty);
+    std::vector<std::uint64_t> old;
+    assign_huge(old, 2 * slots_.size(), kEmpty);
     old.swap(slots_);
     for (const std::uint64_t s : old) {
       if (s == kEmpty) continue;
@@ -304,7 +308,10 @@ class Validator {
       }
       if (first_[x] == x) continue;
       flag(Check::duplicate_reference, static_cast<std::int64_t>(i / V), -1, x);
-      if (canonical_copy_.empty()) canonical_copy_.assign(in_.begin(), in_.end());
+      if (canonical_copy_.empty()) {
+        reserve_huge(canonical_copy_, in_.size());
+        canonical_copy_.assign(in_.begin(), in_.end());
+      }
       canonical_copy_[i] = first_[x];
     }
     v_ = canonical_copy_.empty() ? in_ : std::span<const std::uint32_t>(canonical_copy_);
@@ -312,7 +319,7 @@ class Validator {
   }
 
   void orientations() {
-    ok_.assign(m_, 0);
+    assign_huge(ok_, m_, std::uint8_t{0});
     for (std::size_t s = 0; s < m_; ++s) {
       if (orientation<D>(k_, coords(s)) == Sign::positive)
         ok_[s] = 1;
@@ -322,7 +329,7 @@ class Validator {
   }
 
   void duplicate_simplices() {
-    dup_.assign(m_, 0);
+    assign_huge(dup_, m_, std::uint8_t{0});
     IdTable table(m_);
     const auto key = [&](std::size_t s) {
       std::array<std::uint32_t, V> a{};
@@ -345,7 +352,7 @@ class Validator {
   // on the boundary; kExtra for a third simplex on a facet or a facet with a
   // repeated vertex.
   void link_facets() {
-    nb_.assign(m_ * V, kNone);
+    assign_huge(nb_, m_ * V, kNone);
     IdTable table(m_ * V / 2 + m_ / 16 + 16);  // V/2 facets per simplex, and the boundary's
     for (std::uint32_t s = 0; s < m_; ++s) {
       if (dup_[s]) continue;

@@ -1,5 +1,5 @@
 // The huge-page helpers (algorithms/huge_pages.hpp): reserve_huge,
-// resize_huge and shrink_huge keep what v holds, as reserve, resize and
+// resize_huge, assign_huge and shrink_huge do what reserve, resize, assign and
 // shrink_to_fit do, and advise the new room's whole huge pages; the result of
 // Mesh::take_finite_simplices is advised but for its first huge page (which
 // would otherwise add 2 MiB to the run's peak). Whether the advice was given
@@ -89,6 +89,20 @@ TEST_CASE("huge pages: resize_huge value-initializes the new elements", "[huge_p
   CHECK(v[5] == 0);
   CHECK(v.back() == 0);
   if (const auto hg = advised_huge(middle_of_room(v))) CHECK(*hg);
+}
+
+TEST_CASE("huge pages: assign_huge fills the new room with the value", "[huge_pages]") {
+  std::vector<std::uint32_t> v = counting(5);
+  assign_huge(v, kWords, 9u);
+  REQUIRE(v.size() == kWords);
+  CHECK(v.front() == 9);
+  CHECK(v.back() == 9);
+  if (const auto hg = advised_huge(middle_of_room(v))) CHECK(*hg);
+  // Within the capacity: in place.
+  const std::uint32_t* at = v.data();
+  assign_huge(v, 3, 4u);
+  CHECK((v == std::vector<std::uint32_t>{4, 4, 4}));
+  CHECK(v.data() == at);
 }
 
 TEST_CASE("huge pages: shrink_huge gives the slack back and keeps the elements", "[huge_pages]") {
