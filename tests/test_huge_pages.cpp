@@ -73,8 +73,10 @@ TEST_CASE("huge pages: reserve_huge keeps the elements and advises the new room"
   CHECK(v.capacity() >= kWords);
   CHECK((v == counting(1000)));
   if (const auto hg = advised_huge(middle_of_room(v))) CHECK(*hg);
-  // Only whole huge pages inside the room: not the one holding its start.
-  if (const auto hg = advised_huge(v.data())) CHECK_FALSE(*hg);
+  // Only whole huge pages inside the room: not the one holding its start
+  // (unless the room starts on a huge page's boundary).
+  if (reinterpret_cast<std::uintptr_t>(v.data()) % kHugePage != 0)
+    if (const auto hg = advised_huge(v.data())) CHECK_FALSE(*hg);
   // Less than the capacity: nothing moves.
   const std::uint32_t* at = v.data();
   reserve_huge(v, 10);
