@@ -145,8 +145,7 @@ class FacetTable {
     return static_cast<std::size_t>(h) & (slots_.size() - 1);
   }
   void grow() {
-    std::vector<Slot> old;
-    resize_huge(old, slots_.size() * 2);  // algorithms/huge_pages.hpp
+    std::vector<Slot> old = huge_vector<Slot>(slots_.size() * 2);  // algorithms/huge_pages.hpp
     old.swap(slots_);
     used_ = 0;
     for (const Slot& s : old)

@@ -81,4 +81,12 @@ void resize_huge(std::vector<T, A>& v, std::size_t n) {
   v.resize(n);
 }
 
+// A new vector of n copies of value, in huge pages.
+template <class T>
+std::vector<T> huge_vector(std::size_t n, const T& value = T{}) {
+  std::vector<T> v;
+  assign_huge(v, n, value);
+  return v;
+}
+
 }  // namespace dlab

@@ -972,15 +972,14 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
-  std::vector<std::uint32_t> merged;
-  assign_huge(merged, n, kNotProcessed);  // this and the run's other arrays: algorithms/huge_pages.hpp
+  // This and the run's other large arrays on huge pages (algorithms/huge_pages.hpp).
+  std::vector<std::uint32_t> merged = huge_vector(n, kNotProcessed);
 
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
   if (!init.found) return res;
 
   // Duplicates: lexicographic sort; each group maps to its first id.
-  std::vector<std::uint32_t> order;
-  resize_huge(order, n);
+  std::vector<std::uint32_t> order = huge_vector<std::uint32_t>(n);
   for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return pts[a] < pts[b] || (pts[a] == pts[b] && a < b);

@@ -69,8 +69,7 @@ class IdTable {
   }
   std::size_t next(std::size_t i) const { return i + 1 < slots_.size() ? i + 1 : 0; }  // linear probing
   void grow() {
-    std::vector<std::uint64_t> old;
-    assign_huge(old, 2 * slots_.size(), kEmpty);
+    std::vector<std::uint64_t> old = huge_vector(2 * slots_.size(), kEmpty);
     old.swap(slots_);
     for (const std::uint64_t s : old) {
       if (s == kEmpty) continue;

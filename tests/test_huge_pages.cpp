@@ -1,11 +1,12 @@
 // The huge-page helpers (algorithms/huge_pages.hpp): reserve_huge,
-// resize_huge, assign_huge and shrink_huge do what reserve, resize, assign and
-// shrink_to_fit do, and advise the new room's whole huge pages; the result of
-// Mesh::take_finite_simplices is advised but for its first huge page (which
-// would otherwise add 2 MiB to the run's peak). Whether the advice was given
-// is read from the VmFlags of /proc/self/smaps ("hg": MADV_HUGEPAGE), which
-// Linux shows whether or not huge pages are free; elsewhere, or where the
-// kernel has no transparent huge pages, only the contents are checked.
+// resize_huge, assign_huge, huge_vector and shrink_huge do what reserve,
+// resize, assign, a sized constructor and shrink_to_fit do, and advise the new
+// room's whole huge pages; the result of Mesh::take_finite_simplices is
+// advised but for its first huge page (which would otherwise add 2 MiB to the
+// run's peak). Whether the advice was given is read from the VmFlags of
+// /proc/self/smaps ("hg": MADV_HUGEPAGE), which Linux shows whether or not
+// huge pages are free; elsewhere, or where the kernel has no transparent huge
+// pages, only the contents are checked.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -105,6 +106,15 @@ TEST_CASE("huge pages: assign_huge fills the new room with the value", "[huge_pa
   assign_huge(v, 3, 4u);
   CHECK((v == std::vector<std::uint32_t>{4, 4, 4}));
   CHECK(v.data() == at);
+}
+
+TEST_CASE("huge pages: huge_vector holds n copies of the value", "[huge_pages]") {
+  const std::vector<std::uint32_t> v = huge_vector(kWords, 5u);
+  REQUIRE(v.size() == kWords);
+  CHECK(v.front() == 5);
+  CHECK(v.back() == 5);
+  CHECK(huge_vector<std::uint32_t>(3) == std::vector<std::uint32_t>{0, 0, 0});
+  if (const auto hg = advised_huge(middle_of_room(v))) CHECK(*hg);
 }
 
 TEST_CASE("huge pages: shrink_huge gives the slack back and keeps the elements", "[huge_pages]") {

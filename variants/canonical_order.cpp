@@ -40,15 +40,13 @@ void sort_dimension(std::vector<std::uint32_t>& flat, unsigned threads) {
   std::uint32_t top = 0;
   for (std::size_t i = 0; i < m; ++i) top = std::max(top, least(i));
   // The large arrays in huge pages (algorithms/huge_pages.hpp).
-  std::vector<std::size_t> start;
-  resize_huge(start, std::size_t(top) + 2);
+  std::vector<std::size_t> start = huge_vector<std::size_t>(std::size_t(top) + 2);
   for (std::size_t i = 0; i < m; ++i) ++start[std::size_t(least(i)) + 1];
   for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
   std::vector<std::size_t> next;
   reserve_huge(next, start.size() - 1);
   next.assign(start.begin(), start.end() - 1);
-  std::vector<std::uint32_t> out;
-  resize_huge(out, flat.size());
+  std::vector<std::uint32_t> out = huge_vector<std::uint32_t>(flat.size());
   for (std::size_t i = 0; i < m; ++i) {
     const S c = canonical_simplex<D>(at(flat, i));
     std::copy_n(c.begin(), V, out.begin() + next[c[0]]++ * V);

@@ -152,8 +152,7 @@ void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, Run
   r.counters = std::move(t.counters);
   if (t.outcome != RunResult::Outcome::lower_dimensional) {
     // First occurrence: the smallest input index among the points merged into a vertex.
-    std::vector<std::uint32_t> rep;
-    assign_huge(rep, pts.size(), kNotProcessed);
+    std::vector<std::uint32_t> rep = huge_vector(pts.size(), kNotProcessed);
     std::size_t distinct = 0, processed = 0;
     for (std::size_t i = 0; i < t.merged_into.size(); ++i) {
       const std::uint32_t v = t.merged_into[i];

@@ -139,8 +139,7 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts, unsigned 
   constexpr int max_bits = D == 2 ? 24 : 18;
   int bits = 4;
   while (bits < max_bits && (std::uint64_t(1) << (D * (bits - 4))) < pts.size()) ++bits;
-  std::vector<std::uint64_t> keys;
-  resize_huge(keys, pts.size());
+  std::vector<std::uint64_t> keys = huge_vector<std::uint64_t>(pts.size());
   if (pts.empty()) return keys;
   Point<D> lo = pts[0], hi = pts[0];
   for (const auto& p : pts)
@@ -190,9 +189,8 @@ void sort_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t
                      [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
     return;
   }
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> a, b;
-  resize_huge(a, n);
-  resize_huge(b, n);
+  using Entry = std::pair<std::uint64_t, std::uint32_t>;
+  std::vector<Entry> a = huge_vector<Entry>(n), b = huge_vector<Entry>(n);
   std::uint64_t all_or = 0, all_and = ~std::uint64_t(0);
   for (std::size_t i = 0; i < n; ++i) {
     a[i] = {keys[idx[first + i]], idx[first + i]};
@@ -222,8 +220,7 @@ void sort_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t
 template <int D>
 std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOrder order,
                                       std::uint64_t seed, unsigned threads) {
-  std::vector<std::uint32_t> idx;
-  resize_huge(idx, pts.size());
+  std::vector<std::uint32_t> idx = huge_vector<std::uint32_t>(pts.size());
   for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<std::uint32_t>(i);
   switch (order) {
     case InsertionOrder::input:

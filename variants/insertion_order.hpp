@@ -49,8 +49,7 @@ template <class T, class Order>
 void apply_order(std::vector<T>& v, const Order& order, bool back, std::vector<bool>& done, bool in_place = false) {
   if (!in_place) {
     try {
-      std::vector<T> out;
-      resize_huge(out, v.size());
+      std::vector<T> out = huge_vector<T>(v.size());
       for (std::size_t i = 0; i < v.size(); ++i) {
         if (back)
           out[order[i]] = v[i];
