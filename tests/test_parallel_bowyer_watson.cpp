@@ -76,6 +76,7 @@ void check_all_thread_counts(const std::vector<Point<D>>& pts, std::uint64_t see
   for (unsigned t : {1u, 2u, 3u, 4u, 8u}) {
     ParallelBowyerWatson<K, D> par;
     par.set_threads(t);
+    par.keep_mesh();
     const TriangulationResult p = par.run(std::span<const Point<D>>(seq));
     INFO("threads " << t << ", " << seq.size() << " points in " << D << "D");
     REQUIRE(p.outcome == RunResult::Outcome::ok);

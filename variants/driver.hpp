@@ -165,7 +165,7 @@ void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, Run
     // After a failure only the processed points were seen: count the input's.
     r.distinct_points = t.outcome == RunResult::Outcome::ok ? distinct : count_distinct<D>(pts);
     r.simplices = std::move(t.simplices);
-    for (std::uint32_t& v : r.simplices) v = rep[v];
+    map_indices(r.simplices, rep, o.threads);
     if (o.canonical || o.threads > 0) sort_canonically(r.simplices, D, o.threads);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
