@@ -146,7 +146,7 @@ bool BowyerWatson<K, D>::insert(std::uint32_t i) {
     stamp_ += 2;
   }
   if constexpr (D == 2 && K::exact)  // records in cycle order: Restar links them without a table
-    search_cavity_ccw<K>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, ccw_edges_);
+    search_cavity_ccw<K>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, ccw_edges_, stamps_);
   else if constexpr (D == 2)
     search_cavity<K, D>(k_, mesh_, pts_, i, loc.simplex, stamp_, stamp_ + 1, cavity_, records_, stamps_);
   else {  // what the search marked: the cavity (in) and its outside neighbours (out)

@@ -99,13 +99,13 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
 // Restar<2>::star link the new triangles without a table.  Edge f of a
 // counterclockwise triangle (v0, v1, v2) joins v[f+1] to v[f+2], so the edge
 // after f is f+1 (mod 3, kAfter).  The stack holds the cavity edges still to cross,
-// as neighbour codes (4s + f), the next one on top.
-template <class K>
-void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_t i, std::uint32_t start,
+// as neighbour codes (4s + f), the next one on top.  The guard as in
+// search_cavity (the parallel Bowyer–Watson's LockGuard; NoGuard compiles away).
+template <class K, class Guard>
+bool search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_t i, std::uint32_t start,
                        std::uint32_t in, std::uint32_t out, std::vector<std::uint32_t>& cavity,
-                       std::vector<BoundaryRecord<2>>& records, std::vector<std::uint32_t>& edges) {
+                       std::vector<BoundaryRecord<2>>& records, std::vector<std::uint32_t>& edges, Guard& guard) {
   const Point<2>& p = pts[i];
-  NoGuard guard;
   cavity.clear();
   records.clear();
   // edges[0, top) is the stack (no push_back: g++ left it out of line here).
@@ -114,28 +114,30 @@ void search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_
     if (top == edges.size()) [[unlikely]] edges.resize(2 * top + 16);
     edges[top++] = e;
   };
-  m.set_mark(start, in);
+  guard.set_mark(m, start, in);
   cavity.push_back(start);
   for (int f = 2; f >= 0; --f) push(Mesh<2>::encode(start, f));
   while (top != 0) {
     const std::uint32_t e = edges[--top];
-    const std::uint32_t enc = m.neighbour_enc(e);
+    const std::uint32_t enc = guard.code(m.neighbour_enc(e));
     const std::uint32_t t = Mesh<2>::simplex_of(enc);
-    const std::uint32_t mk = m.mark(t);
+    if (!guard.acquire(t)) return false;
+    const std::uint32_t mk = guard.mark(m, t);
     if (mk == in) continue;
     if (mk != out) {
       if (in_conflict<K, 2>(k, m, pts, t, p, guard) == Conflict::yes) {
-        m.set_mark(t, in);
+        guard.set_mark(m, t, in);
         cavity.push_back(t);
         const int j = Mesh<2>::facet_of(enc);
         push(Mesh<2>::encode(t, kBefore[j]));  // crossed second
         push(Mesh<2>::encode(t, kAfter[j]));   // crossed first
         continue;
       }
-      m.set_mark(t, out);
+      guard.set_mark(m, t, out);
     }
     records.push_back(boundary_record<2>(m, Mesh<2>::simplex_of(e), Mesh<2>::facet_of(e), i, enc));
   }
+  return true;
 }
 
 }  // namespace dlab

@@ -189,7 +189,7 @@ class ParallelBowyerWatson {
     LockGuard guard;
     WorkerSlots<D> slots;
     Restar<D> restar;
-    std::vector<std::uint32_t> cavity, deferred;
+    std::vector<std::uint32_t> cavity, deferred, edges;  // edges: search_cavity_ccw's stack (2D)
     std::vector<BoundaryRecord<D>> records;
     std::uint32_t last = 0;   // where the next walk starts
     std::uint32_t stamp = 0;  // this worker's stamps: stamp (in), stamp + 1 (out)
@@ -295,8 +295,13 @@ typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(W
   const std::uint32_t step = 2 * threads_;
   if (w.stamp + step + 1 > LockGuard::kStampLimit) return abandon(w, guard);  // the stamps are reset between rounds
   w.stamp += step;
-  if (!search_cavity<K, D>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records, guard))
-    return abandon(w, guard);
+  bool searched;
+  if constexpr (D == 2)  // records in cycle order: Restar links them without a table
+    searched = search_cavity_ccw<K>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records,
+                                    w.edges, guard);
+  else
+    searched = search_cavity<K, D>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records, guard);
+  if (!searched) return abandon(w, guard);
   const std::size_t extra = w.records.size() > w.cavity.size() ? w.records.size() - w.cavity.size() : 0;
   if (!w.slots.prepare(extra, guard, reserve_next_, reserve_end_)) return abandon(w, guard);
 

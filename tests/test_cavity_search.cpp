@@ -67,7 +67,8 @@ TEST_CASE("cavity search 2D: depth first gives the breadth-first cavity, its bou
     REQUIRE(search_cavity<K, 2>(k, m, pts.data(), i, loc.simplex, stamp, stamp + 1, cavity_bfs, records_bfs,
                                 guard));
     stamp += 4;
-    search_cavity_ccw<K>(k, m, pts.data(), i, loc.simplex, stamp, stamp + 1, cavity_dfs, records_dfs, stack);
+    REQUIRE(search_cavity_ccw<K>(k, m, pts.data(), i, loc.simplex, stamp, stamp + 1, cavity_dfs, records_dfs, stack,
+                                 guard));
     largest = std::max(largest, cavity_dfs.size());
     // The same simplices and the same boundary facets.
     std::sort(cavity_bfs.begin(), cavity_bfs.end());
