@@ -39,6 +39,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -84,6 +85,18 @@ struct CacheAligned {
     return p;
   }
   void deallocate(T* p, std::size_t n) { ::operator delete(p, alignment(n * sizeof(T))); }
+  // resize(n) without a value leaves the new elements unwritten (default-
+  // initialised), so that Mesh::add_reserve can have them written on several
+  // threads: the first touch of a new page, the kernel's zeroing of it, is
+  // paid by whichever thread writes it.  Every other growth gives a value.
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
   template <class U>
   bool operator==(const CacheAligned<U>&) const { return true; }
 };
@@ -188,12 +201,31 @@ class Mesh {
 
   // n more slots, deleted and on no free list: a reserve that a caller hands
   // out itself (the parallel Bowyer–Watson's workers; they count what they
-  // create and destroy there and report it with adjust_live).
-  std::uint32_t add_reserve(std::size_t n) {
+  // create and destroy there and report it with adjust_live).  Returns the
+  // first.  Their words are written by for_ranges(first, last, write), which
+  // must call write(a, b) on disjoint ranges that cover [first, last), on as
+  // many threads as it likes (the workers: so that the new pages are first
+  // touched in parallel, not between two rounds by one thread).
+  template <class ForRanges>
+  std::uint32_t add_reserve(std::size_t n, ForRanges&& for_ranges) {
     const std::uint32_t first = slots();
-    grow(n);
-    for (std::uint32_t s = first; s < slots(); ++s) d_[std::size_t(s) * S] = kDead;
+    if (n > max_slots_ - first) [[unlikely]]
+      too_large(max_slots_);
+    d_.resize(d_.size() + n * S);  // unwritten: CacheAligned::construct
+    const bool marks = !kMarkInBlock && has_marks_;
+    if (marks) mark_.resize(mark_.size() + n);
+    for_ranges(first, slots(), [this, marks](std::uint32_t a, std::uint32_t b) {
+      std::fill(d_.begin() + std::size_t(a) * S, d_.begin() + std::size_t(b) * S, kNoNeighbour);
+      for (std::uint32_t s = a; s < b; ++s) {
+        d_[std::size_t(s) * S] = kDead;
+        if constexpr (kMarkInBlock) d_[std::size_t(s) * S + kMarkWord] = 0;
+      }
+      if (marks) std::fill(mark_.begin() + a, mark_.begin() + b, 0u);
+    });
     return first;
+  }
+  std::uint32_t add_reserve(std::size_t n) {
+    return add_reserve(n, [](std::uint32_t a, std::uint32_t b, auto&& write) { write(a, b); });
   }
   void adjust_live(std::int64_t delta) { live_ = static_cast<std::uint32_t>(std::int64_t(live_) + delta); }
 

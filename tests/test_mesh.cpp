@@ -91,7 +91,42 @@ void check_marks(std::size_t n) {
   for (std::uint32_t s = first; s < first + 3; ++s) CHECK(m.mark(s) == 0);
 }
 
+// add_reserve's words are the same whichever ranges write them: the parallel
+// Bowyer–Watson's workers write them in pieces, in any order (the vector grows
+// without writing them: CacheAligned::construct).
+template <int D>
+void check_reserve_in_pieces() {
+  Mesh<D> whole, pieces;
+  auto backwards_in_pieces = [](std::uint32_t first, std::uint32_t last, auto&& write) {
+    for (std::uint32_t hi = last; hi > first;) {
+      const std::uint32_t lo = hi - std::min<std::uint32_t>(777, hi - first);
+      write(lo, hi);
+      hi = lo;
+    }
+  };
+  for (std::size_t n : {100000u, 60000u}) {  // the second grows past the first's capacity
+    const std::uint32_t a = whole.add_reserve(n), b = pieces.add_reserve(n, backwards_in_pieces);
+    CHECK(a == b);
+  }
+  REQUIRE(whole.slots() == pieces.slots());
+  bool dead = true, unset = true, unmarked = true;
+  for (std::uint32_t s = 0; s < pieces.slots(); ++s) {
+    dead = dead && !pieces.alive(s);
+    unmarked = unmarked && pieces.mark(s) == 0;
+    for (int f = 0; f <= D; ++f) unset = unset && pieces.neighbour(s, f) == kNoNeighbour;
+  }
+  CHECK(dead);
+  CHECK(unset);
+  CHECK(unmarked);
+  CHECK((all_words(pieces) == all_words(whole)));
+}
+
 }  // namespace
+
+TEST_CASE("mesh: add_reserve writes the same words whatever the ranges", "[mesh]") {
+  check_reserve_in_pieces<2>();
+  check_reserve_in_pieces<3>();
+}
 
 TEST_CASE("mesh: take_finite_simplices equals for_each_finite and empties the mesh", "[mesh]") {
   check_take<2>(150000);
