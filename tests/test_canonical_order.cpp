@@ -58,8 +58,8 @@ void check_every_thread_count(const std::vector<std::uint32_t>& flat) {
 }  // namespace
 
 // Would catch: a chunk's or a bin's place computed wrong (simplices lost,
-// doubled or out of order), the bins' shift off by one, a simplex not made
-// canonical (orientation lost), ties on the smallest index left unsorted.
+// doubled or out of order), a simplex not made canonical (orientation lost),
+// ties on the smallest index left unsorted or cut into pieces.
 TEST_CASE("canonical order: the radix sort equals an independent sort", "[canonical_order]") {
   std::mt19937_64 rng(20261128);
   for (std::uint32_t top : {7u, 4095u, 4096u, 100000u, (1u << 20) + 3u, 0xfffffffeu}) {
