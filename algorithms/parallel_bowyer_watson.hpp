@@ -222,6 +222,25 @@ class ParallelBowyerWatson {
   void insert_batch(std::vector<std::uint32_t> points);
   void ensure_reserve(std::size_t slots);
   void reset_stamps_if_needed(std::uint64_t insertions);
+  // f(r) on the workers' threads for the subranges r of `range`, between two
+  // steps of the calling thread.  oneTBB orders the two inside libtbb, where a
+  // race detector (ThreadSanitizer) does not see; the atomics around the
+  // round show it that order.
+  template <class Range, class Partitioner, class F>
+  void on_workers(const Range& range, const Partitioner& partitioner, F&& f) {
+    round_started_.fetch_add(1, std::memory_order_release);
+    arena_.execute([&] {
+      tbb::parallel_for(
+          range,
+          [&](const Range& r) {
+            (void)round_started_.load(std::memory_order_acquire);
+            f(r);
+            workers_done_.fetch_add(1, std::memory_order_release);
+          },
+          partitioner);
+    });
+    (void)workers_done_.load(std::memory_order_acquire);
+  }
 
   K k_;
   Mesh<D> mesh_;
@@ -335,16 +354,8 @@ void ParallelBowyerWatson<K, D>::ensure_reserve(std::size_t slots) {
   // Small reserves too, so that the tests' runs take this path.
   auto write = [&](std::uint32_t first, std::uint32_t last, auto&& write_range) {
     if (threads_ == 1 || last - first < (1u << 12)) return write_range(first, last);
-    round_started_.fetch_add(1, std::memory_order_release);
-    arena_.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::uint32_t>(first, last, 1u << 12),
-                        [&](const tbb::blocked_range<std::uint32_t>& r) {
-                          (void)round_started_.load(std::memory_order_acquire);
-                          write_range(r.begin(), r.end());
-                          workers_done_.fetch_add(1, std::memory_order_release);
-                        });
-    });
-    (void)workers_done_.load(std::memory_order_acquire);
+    on_workers(tbb::blocked_range<std::uint32_t>(first, last, 1u << 12), tbb::auto_partitioner(),
+               [&](const tbb::blocked_range<std::uint32_t>& r) { write_range(r.begin(), r.end()); });
   };
   mesh_.add_reserve(std::max<std::size_t>(slots, mesh_.slots() / 8), write);
   reserve_next_.store(next, std::memory_order_relaxed);
@@ -414,35 +425,27 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
     // not leave the other threads waiting.  Each thread inserts with the
     // worker of its arena slot.
     const std::size_t chunks = std::min(points.size() / 64, 8 * T), per = (points.size() + chunks - 1) / chunks;
-    round_started_.fetch_add(1, std::memory_order_release);
-    arena_.execute([&] {
-      tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, chunks, 1),
-          [&](const tbb::blocked_range<std::size_t>& range) {
-            (void)round_started_.load(std::memory_order_acquire);
-            Worker& w = workers_[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
-            w.handoff.fetch_add(1, std::memory_order_acquire);
-            const std::size_t lo = std::min(points.size(), range.begin() * per);
-            const std::size_t hi = std::min(points.size(), range.end() * per);
-            for (std::size_t j = lo; j < hi; ++j) {
-              if (failed_.load(std::memory_order_relaxed)) {
-                w.deferred.insert(w.deferred.end(), points.begin() + j, points.begin() + hi);
-                break;
-              }
-              const Status st = insert(w, w.guard, points[j], false);
-              if (st == Status::deferred) {
-                w.deferred.push_back(points[j]);
-                ++w.deferrals;
-              } else if (st == Status::failed) {
-                failed_.store(true, std::memory_order_relaxed);
-              }
-            }
-            w.handoff.fetch_add(1, std::memory_order_release);
-            workers_done_.fetch_add(1, std::memory_order_release);
-          },
-          tbb::simple_partitioner());
-    });
-    (void)workers_done_.load(std::memory_order_acquire);
+    on_workers(tbb::blocked_range<std::size_t>(0, chunks, 1), tbb::simple_partitioner(),
+               [&](const tbb::blocked_range<std::size_t>& range) {
+                 Worker& w = workers_[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
+                 w.handoff.fetch_add(1, std::memory_order_acquire);
+                 const std::size_t lo = std::min(points.size(), range.begin() * per);
+                 const std::size_t hi = std::min(points.size(), range.end() * per);
+                 for (std::size_t j = lo; j < hi; ++j) {
+                   if (failed_.load(std::memory_order_relaxed)) {
+                     w.deferred.insert(w.deferred.end(), points.begin() + j, points.begin() + hi);
+                     break;
+                   }
+                   const Status st = insert(w, w.guard, points[j], false);
+                   if (st == Status::deferred) {
+                     w.deferred.push_back(points[j]);
+                     ++w.deferrals;
+                   } else if (st == Status::failed) {
+                     failed_.store(true, std::memory_order_relaxed);
+                   }
+                 }
+                 w.handoff.fetch_add(1, std::memory_order_release);
+               });
     ++rounds_;
     std::vector<std::uint32_t> rest;
     for (const Worker& w : workers_) rest.insert(rest.end(), w.deferred.begin(), w.deferred.end());
