@@ -3,18 +3,20 @@
 # --threads T` against the serial algorithm (`--canonical`, so that both sort
 # their output the same way) on the same points, in the same run.
 #
-#   bench/parallel_scaling.sh [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t "1 2 4"] [-k KERNEL] DLAB
+#   bench/parallel_scaling.sh [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t "1 2 4"] [-k KERNEL] DLAB [DLAB...]
 #
 # Seconds are `--stats`'s "seconds" (triangulating, ordering and sorting the
 # output; not reading or writing), the median of REPEAT runs, alternating the
-# configurations so that a change in the machine's load hits all of them.
-# Output: one markdown row per configuration: threads, median seconds, speed-up
-# over serial, and the deferred insertions (points put back after meeting
-# another worker) of the last run. Every output is compared with the serial one
-# byte for byte; a difference stops the script with exit 1.
+# configurations (and the binaries, when several are given: a build before and
+# after a change) so that a change in the machine's load hits all of them.
+# Output: for each binary, one markdown row per configuration: threads, median
+# seconds, speed-up over that binary's serial run, and the deferred insertions
+# (points put back after meeting another worker) of the last run. Every output
+# is compared with the first binary's serial one byte for byte; a difference
+# stops the script with exit 1.
 set -euo pipefail
 dim=3 n=1000000 gen=uniform repeat=3 threads="1 2" kernel=adaptive
-usage="usage: $0 [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t \"T1 T2 ...\"] [-k KERNEL] DLAB"
+usage="usage: $0 [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t \"T1 T2 ...\"] [-k KERNEL] DLAB [DLAB...]"
 while getopts "d:n:g:r:t:k:" o; do
   case $o in
     d) dim=$OPTARG ;; n) n=$OPTARG ;; g) gen=$OPTARG ;; r) repeat=$OPTARG ;; t) threads=$OPTARG ;;
@@ -22,30 +24,37 @@ while getopts "d:n:g:r:t:k:" o; do
   esac
 done
 shift $((OPTIND - 1))
-[ $# -eq 1 ] || { echo "$usage" >&2; exit 2; }
-dlab=$1
+[ $# -ge 1 ] || { echo "$usage" >&2; exit 2; }
+binaries=("$@")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-"$dlab" gen "$gen" --dim "$dim" --n "$n" --seed 1 -o "$work/p.txt"
+"${binaries[0]}" gen "$gen" --dim "$dim" --n "$n" --seed 1 -o "$work/p.txt"
 configs=(serial $threads)
 for ((r = 0; r < repeat; ++r)); do
-  for c in "${configs[@]}"; do
-    if [ "$c" = serial ]; then opt=(--canonical); else opt=(--threads "$c"); fi
-    "$dlab" triangulate "$work/p.txt" --kernel "$kernel" "${opt[@]}" -o "$work/$c.tri" --stats "$work/$c.json"
-    grep -o '"seconds": [0-9.e+-]*' "$work/$c.json" | cut -d' ' -f2 >> "$work/$c.sec"
-    [ -t 2 ] && printf '\rrun %d/%d: %-6s' $((r + 1)) "$repeat" "$c" >&2
+  for ((b = 0; b < ${#binaries[@]}; ++b)); do
+    for c in "${configs[@]}"; do
+      if [ "$c" = serial ]; then opt=(--canonical); else opt=(--threads "$c"); fi
+      "${binaries[b]}" triangulate "$work/p.txt" --kernel "$kernel" "${opt[@]}" -o "$work/$b.$c.tri" \
+        --stats "$work/$b.$c.json"
+      grep -o '"seconds": [0-9.e+-]*' "$work/$b.$c.json" | cut -d' ' -f2 >> "$work/$b.$c.sec"
+      [ -t 2 ] && printf '\rrun %d/%d: binary %d, %-6s' $((r + 1)) "$repeat" $((b + 1)) "$c" >&2
+    done
   done
 done
 [ -t 2 ] && printf '\r%40s\r' '' >&2
 median() { sort -g "$1" | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
-base=$(median "$work/serial.sec")
-echo "| $gen ${dim}D n=$n $kernel | threads | seconds | speed-up over serial | deferred insertions |"
-echo "|---|---:|---:|---:|---:|"
-for c in "${configs[@]}"; do
-  cmp -s "$work/serial.tri" "$work/$c.tri" || { echo "$c: output differs from the serial one" >&2; exit 1; }
-  s=$(median "$work/$c.sec")
-  d=$(grep -o '"deferred_insertions": [0-9]*' "$work/$c.json" | cut -d' ' -f2 || true)
-  awk -v c="$c" -v s="$s" -v b="$base" -v d="${d:--}" \
-    'BEGIN {printf "| | %s | %.3f | %.2f | %s |\n", c, s, b / s, d}'
+for ((b = 0; b < ${#binaries[@]}; ++b)); do
+  base=$(median "$work/$b.serial.sec")
+  [ $b -gt 0 ] && echo
+  echo "| $gen ${dim}D n=$n $kernel, ${binaries[b]} | threads | seconds | speed-up over serial | deferred insertions |"
+  echo "|---|---:|---:|---:|---:|"
+  for c in "${configs[@]}"; do
+    cmp -s "$work/0.serial.tri" "$work/$b.$c.tri" ||
+      { echo "${binaries[b]} $c: output differs from ${binaries[0]}'s serial one" >&2; exit 1; }
+    s=$(median "$work/$b.$c.sec")
+    d=$(grep -o '"deferred_insertions": [0-9]*' "$work/$b.$c.json" | cut -d' ' -f2 || true)
+    awk -v c="$c" -v s="$s" -v b="$base" -v d="${d:--}" \
+      'BEGIN {printf "| | %s | %.3f | %.2f | %s |\n", c, s, b / s, d}'
+  done
 done
