@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "algorithms/huge_pages.hpp"
@@ -59,13 +60,30 @@ class KdTree {
   static constexpr std::uint32_t kFramed = 0x80000000u;
   static constexpr std::uint32_t kNoParent = 0x7FFFFFFFu;
 
+  // A point and its id: the tree keeps its points in these, in its order
+  // (a node's are slots [begin, end)), and its splits move them, so that a
+  // comparison reads nothing else (indirect ids were most of the build's
+  // time at 10^6).
+  struct Slot {
+    Point<D> x;
+    std::uint32_t id;
+  };
+
   // Builds the tree on pts[ids[k]] (distinct points, at least one).
   void build(std::span<const Point<D>> pts, const std::vector<std::uint32_t>& ids) {
+    std::vector<Slot> slots = huge_vector<Slot>(ids.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) slots[k] = {pts[ids[k]], ids[k]};
+    build(std::move(slots), pts.size());
+  }
+  // The same on the points of `slots` (distinct, in any order), whose ids
+  // are below id_count.
+  void build(std::vector<Slot>&& slots, std::size_t id_count) {
+    slots_ = std::move(slots);
     std::array<double, D> mn, mx;
     mn.fill(std::numeric_limits<double>::infinity());
     mx.fill(-std::numeric_limits<double>::infinity());
-    for (std::uint32_t id : ids)
-      for (int i = 0; i < D; ++i) mn[i] = std::min(mn[i], pts[id][i]), mx[i] = std::max(mx[i], pts[id][i]);
+    for (const Slot& p : slots_)
+      for (int i = 0; i < D; ++i) mn[i] = std::min(mn[i], p.x[i]), mx[i] = std::max(mx[i], p.x[i]);
     // The origin: on an axis whose points all lie within 2^-8 of their
     // midpoint m (relative to |m|), m rounded; else 0. Then every x on that
     // axis is within a factor 2 of m and of the same sign, so x - m is exact
@@ -74,32 +92,27 @@ class KdTree {
     // as their spacing and nothing is pruned.
     for (int i = 0; i < D; ++i) {
       origin_[i] = 0;
-      if (ids.empty()) continue;
+      if (slots_.empty()) continue;
       const double m = mn[i] / 2 + mx[i] / 2;
       if (mx[i] - mn[i] <= std::fabs(m) * 0x1p-8) origin_[i] = m;  // mixed signs: spread >= 2 |m|
     }
     double big = 0;
-    for (std::uint32_t id : ids)
-      for (int i = 0; i < D; ++i) big = std::max(big, std::fabs(pts[id][i] - origin_[i]));
+    for (const Slot& p : slots_)
+      for (int i = 0; i < D; ++i) big = std::max(big, std::fabs(p.x[i] - origin_[i]));
     int e = 0;
     if (big > 0) std::frexp(big, &e);
     // big * scale_ in [0.5, 1), or as close as a representable power of two
     // allows (subnormal inputs: 2^1074 overflows; 2^1000 brings them to 2^-74).
     scale_ = std::ldexp(1.0, std::clamp(-e, -1000, 1000));
     // Huge pages for the large arrays (algorithms/huge_pages.hpp).
-    items_.clear();
-    reserve_huge(items_, ids.size());
-    items_.assign(ids.begin(), ids.end());
-    assign_huge(leaf_of_, pts.size(), kNoNode);
+    assign_huge(leaf_of_, id_count, kNoNode);
     nodes_.clear();
-    reserve_huge(nodes_, 2 * (ids.size() / kLeaf + 1));
+    reserve_huge(nodes_, 2 * (slots_.size() / kLeaf + 1));
     frame_of_.clear();
     reserve_huge(frame_of_, nodes_.capacity());
     frames_.clear();
-    if (!items_.empty()) build_node(pts, 0, static_cast<std::uint32_t>(items_.size()), kNoParent);
-    share_rows(pts);
-    resize_huge(coords_, items_.size());
-    for (std::size_t k = 0; k < items_.size(); ++k) coords_[k] = pts[items_[k]];
+    if (!slots_.empty()) build_node(0, static_cast<std::uint32_t>(slots_.size()), kNoParent);
+    share_rows();
   }
 
   // An enclosure of (x - origin) * scale for a coordinate x on `axis` of a
@@ -134,35 +147,52 @@ class KdTree {
   bool framed(std::uint32_t k) const { return (nodes_[k].parent & kFramed) != 0; }
   std::uint32_t parent(std::uint32_t k) const { return nodes_[k].parent & ~kFramed; }
   std::size_t frame_count() const { return frames_.size(); }
-  std::uint32_t id(std::uint32_t slot) const { return items_[slot]; }
-  const Point<D>& coords(std::uint32_t slot) const { return coords_[slot]; }
+  std::uint32_t id(std::uint32_t slot) const { return slots_[slot].id; }
+  const Point<D>& coords(std::uint32_t slot) const { return slots_[slot].x; }
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t bytes() const {
     return nodes_.capacity() * sizeof(Node) + frame_of_.capacity() * 4 + frames_.capacity() * sizeof(NodeFrame<D>) +
-           items_.capacity() * 4 + leaf_of_.capacity() * 4 +
-           coords_.capacity() * sizeof(Point<D>);
+           slots_.capacity() * sizeof(Slot) + leaf_of_.capacity() * 4;
   }
 
  private:
-  std::uint32_t build_node(std::span<const Point<D>> pts, std::uint32_t b, std::uint32_t e,
-                           std::uint32_t parent) {
+  // The box of the points of slots [b, e): their enclosures' extremes.
+  // Where every coordinate on an axis scales to 2^-1000 or more in magnitude,
+  // each enclosure there is one double, (x - origin) * scale rounded, which
+  // is monotone in x: the box's ends are then the extreme coordinates'. Else
+  // (the range reaches below 2^-1000: zero, underflow) each point's own.
+  void set_box(Node& n, std::uint32_t b, std::uint32_t e) const {
+    std::array<double, D> mn = slots_[b].x, mx = slots_[b].x;
+    for (std::uint32_t s = b + 1; s < e; ++s)
+      for (int i = 0; i < D; ++i) mn[i] = std::min(mn[i], slots_[s].x[i]), mx[i] = std::max(mx[i], slots_[s].x[i]);
+    for (int i = 0; i < D; ++i) {
+      const Iv lo = scaled_iv(mn[i], i), hi = scaled_iv(mx[i], i);
+      if (lo.lo >= 0x1p-1000 || hi.hi <= -0x1p-1000) {
+        n.lo[i] = lo.lo;
+        n.hi[i] = hi.hi;
+        continue;
+      }
+      for (std::uint32_t s = b; s < e; ++s) {
+        const Iv v = scaled_iv(slots_[s].x[i], i);
+        n.lo[i] = s == b ? v.lo : std::min(n.lo[i], v.lo);
+        n.hi[i] = s == b ? v.hi : std::max(n.hi[i], v.hi);
+      }
+    }
+  }
+
+  std::uint32_t build_node(std::uint32_t b, std::uint32_t e, std::uint32_t parent) {
     const auto k = static_cast<std::uint32_t>(nodes_.size());
     Node n{};
     n.begin = b;
     n.end = e;
     n.right = kNoNode;
     n.parent = parent;
-    for (std::uint32_t s = b; s < e; ++s)
-      for (int i = 0; i < D; ++i) {
-        const Iv v = scaled_iv(pts[items_[s]][i], i);
-        n.lo[i] = s == b ? v.lo : std::min(n.lo[i], v.lo);
-        n.hi[i] = s == b ? v.hi : std::max(n.hi[i], v.hi);
-      }
+    set_box(n, b, e);
     nodes_.push_back(n);
     frame_of_.push_back(kNoNode);
     if (e - b <= kLeaf) {
-      for (std::uint32_t s = b; s < e; ++s) leaf_of_[items_[s]] = k;
-      fit_frame(pts, k);
+      for (std::uint32_t s = b; s < e; ++s) leaf_of_[slots_[s].id] = k;  // final: no later split moves them
+      fit_frame(k);
       return k;
     }
     int axis = 0;
@@ -170,33 +200,33 @@ class KdTree {
       if (n.hi[i] - n.lo[i] > n.hi[axis] - n.lo[axis]) axis = i;
     const std::uint32_t m = b + (e - b) / 2;
     // A total order (coordinate, then id): the tree is the same on every run.
-    std::nth_element(items_.begin() + b, items_.begin() + m, items_.begin() + e,
-                     [&](std::uint32_t x, std::uint32_t y) {
-                       const double u = pts[x][axis], w = pts[y][axis];
-                       return u < w || (u == w && x < y);
+    std::nth_element(slots_.begin() + b, slots_.begin() + m, slots_.begin() + e,
+                     [axis](const Slot& x, const Slot& y) {
+                       const double u = x.x[axis], w = y.x[axis];
+                       return u < w || (u == w && x.id < y.id);
                      });
-    build_node(pts, b, m, k);
-    const std::uint32_t r = build_node(pts, m, e, k);
+    build_node(b, m, k);
+    const std::uint32_t r = build_node(m, e, k);
     nodes_[k].right = r;
     // Bottom up: a node is tried only if a child is flat (uniform sets: the
     // leaves alone; a line or a plane: every node along it).
-    if (frame_of_[k + 1] != kNoNode || frame_of_[r] != kNoNode) fit_frame(pts, k);
+    if (frame_of_[k + 1] != kNoNode || frame_of_[r] != kNoNode) fit_frame(k);
     return k;
   }
 
-  void gather(std::span<const Point<D>> pts, std::uint32_t k) {  // node k's scaled points into scratch_
+  void gather(std::uint32_t k) {  // node k's scaled points into scratch_
     const Node& n = nodes_[k];
     scratch_.clear();
     for (std::uint32_t s = n.begin; s < n.end; ++s) {
       std::array<Iv, D> x;
-      for (int i = 0; i < D; ++i) x[i] = scaled_iv(pts[items_[s]][i], i);
+      for (int i = 0; i < D; ++i) x[i] = scaled_iv(slots_[s].x[i], i);
       scratch_.push_back(x);
     }
   }
 
-  void fit_frame(std::span<const Point<D>> pts, std::uint32_t k) {
+  void fit_frame(std::uint32_t k) {
     const Node& n = nodes_[k];
-    gather(pts, k);
+    gather(k);
     if (auto fr = NodeFrame<D>::fit(scratch_, n.lo, n.hi)) {
       frame_of_[k] = static_cast<std::uint32_t>(frames_.size());
       frames_.push_back(*fr);
@@ -212,14 +242,14 @@ class KdTree {
   // most of it in the projections). Not where the parent's rows are tilted
   // by a point off the line (still flat by fit's rule): the child's box in
   // them was thick, and 2D collinear n = 5000 cost twice the instructions.
-  void share_rows(std::span<const Point<D>> pts) {
+  void share_rows() {
     for (std::uint32_t k = 0; k < nodes_.size(); ++k) {
       if (!(nodes_[k].parent & kFramed)) continue;
       NodeFrame<D>& fr = frames_[frame_of_[k]];
       fr.rows_id = frame_of_[k];
       if (k == root() || !(nodes_[parent(k)].parent & kFramed)) continue;
       const NodeFrame<D>& up = frames_[frame_of_[parent(k)]];
-      gather(pts, k);
+      gather(k);
       if (auto made = NodeFrame<D>::make(scratch_, up.u); made && made->thinnest() <= 2 * fr.thinnest()) {
         made->rows_id = up.rows_id;
         fr = *made;
@@ -233,8 +263,8 @@ class KdTree {
   std::vector<std::uint32_t> frame_of_;  // per node: its index in frames_, or kNoNode
   std::vector<NodeFrame<D>> frames_;
   std::vector<std::array<Iv, D>> scratch_;  // build: a node's scaled points
-  std::vector<std::uint32_t> items_, leaf_of_;
-  std::vector<Point<D>> coords_;
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> leaf_of_;
 };
 
 }  // namespace dlab

@@ -70,6 +70,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/box_ball.hpp"
@@ -978,30 +979,39 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   const InitialSimplex<D> init = initial_simplex_or_outcome<D>(k_, pts, res);
   if (!init.found) return res;
 
-  // Duplicates: lexicographic sort; each group maps to its first id.
-  std::vector<std::uint32_t> order = huge_vector<std::uint32_t>(n);
-  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return pts[a] < pts[b] || (pts[a] == pts[b] && a < b);
-  });
-  std::vector<std::uint32_t> uniq;
-  reserve_huge(uniq, n);
+  // Duplicates: the points sorted lexicographically with their ids, as
+  // records (a comparison reads no memory elsewhere); each group maps to its
+  // first id. The distinct ids, in increasing order, by one pass; then the
+  // records hold their points in that order, for the tree (whose splits, and
+  // so the searches' order and the inexact kernels' answers, depend on it).
+  using Slot = typename KdTree<D>::Slot;
+  std::vector<Slot> slots = huge_vector<Slot>(n);
+  for (std::uint32_t i = 0; i < n; ++i) slots[i] = {pts[i], i};
+  std::sort(slots.begin(), slots.end(),
+            [](const Slot& a, const Slot& b) { return a.x < b.x || (a.x == b.x && a.id < b.id); });
   for (std::size_t k = 0; k < n; ++k) {
-    if (k > 0 && pts[order[k]] == pts[order[k - 1]]) {
-      merged[order[k]] = merged[order[k - 1]];
+    const std::uint32_t id = slots[k].id;
+    if (k > 0 && slots[k].x == slots[k - 1].x) {
+      merged[id] = merged[slots[k - 1].id];
       ++duplicates_;
     } else {
-      merged[order[k]] = order[k];
-      uniq.push_back(order[k]);
+      merged[id] = id;
     }
   }
-  std::sort(uniq.begin(), uniq.end());
+  std::vector<std::uint32_t> uniq;
+  reserve_huge(uniq, n - duplicates_);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (merged[i] == i) {
+      slots[uniq.size()] = {pts[i], i};
+      uniq.push_back(i);
+    }
+  slots.resize(uniq.size());
   const std::uint64_t nu = uniq.size();
   max_simplices_ = D == 2 ? 2 * nu + 8 : (nu * (nu >= 3 ? nu - 3 : 0)) / 2 + 8;
   if constexpr (!K::exact)
     if (D == 3) max_simplices_ = std::min<std::uint64_t>(max_simplices_, 64 * nu + 1024);
 
-  tree_.build(pts, uniq);
+  tree_.build(std::move(slots), n);
   done_.assign(tree_.node_count(), 0u);
   projections_.resize(tree_.frame_count());
   projected_at_.assign(tree_.frame_count(), 0u);

@@ -32,6 +32,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <type_traits>
@@ -54,8 +55,10 @@ namespace {
 
 using Q = boost::multiprecision::mpq_rational;
 
-// Every box encloses its points' exact scaled coordinates, and every point
-// interval of scaled_iv is the exact value. Returns the translated axes.
+// Every box encloses its points' exact scaled coordinates, and is the union
+// of their enclosures (the build takes most boxes from the extreme
+// coordinates alone); every point interval of scaled_iv is the exact value.
+// Returns the translated axes.
 template <int D>
 int check_tree(const std::vector<Point<D>>& pts) {
   std::vector<std::uint32_t> ids(pts.size());
@@ -66,6 +69,15 @@ int check_tree(const std::vector<Point<D>>& pts) {
   for (int i = 0; i < D; ++i) translated += tree.origin(i) != 0;
   for (std::size_t k = 0; k < tree.node_count(); ++k) {
     const auto& n = tree.node(static_cast<std::uint32_t>(k));
+    for (int i = 0; i < D; ++i) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (std::uint32_t s = n.begin; s < n.end; ++s) {
+        const Iv v = tree.scaled_iv(tree.coords(s)[i], i);
+        lo = std::min(lo, v.lo), hi = std::max(hi, v.hi);
+      }
+      REQUIRE(n.lo[i] == lo);
+      REQUIRE(n.hi[i] == hi);
+    }
     for (std::uint32_t s = n.begin; s < n.end; ++s)
       for (int i = 0; i < D; ++i) {
         const double x = tree.coords(s)[i];
@@ -168,6 +180,20 @@ TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[k
     CHECK(check_tree<3>(gen::half_integers<3>(1000, 3, {c, -c, c})) == 3);
   // Subnormal edges: the window crosses or touches zero: no translation.
   CHECK(check_tree<2>(gen::binade_doubles<2>(900, -1074, {1, 1})) == 0);
+  // Scaled values on both sides of 2^-1000 (the scale is 2^-1 here), of
+  // both signs, exact zeros and subnormals that scale to zero: boxes of
+  // nodes away from zero come from their extreme coordinates, the others
+  // from every point.
+  {
+    std::vector<Point2> edge{{1, 1}, {-1, -1}};
+    for (const double m : {0x1p-999, 0x1p-1022, 0x1p-1074})
+      for (int k = -20; k < 40; ++k) {
+        const double x = m + k * (m > 0x1p-1000 ? 0x1p-1044 : 0x1p-1074);
+        edge.push_back({x, -x});
+        if (x != 0) edge.push_back({-x, x});
+      }
+    CHECK(check_tree<2>(edge) == 0);
+  }
   // Extreme doubles (DBL_MAX beside subnormals, both signs) and uniform [0, 1]
   // (translating it by 0.5 would make inexact differences): not translated.
   CHECK(check_tree<2>(gen::extreme_doubles<2>(2000, 1)) == 0);
