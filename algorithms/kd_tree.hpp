@@ -113,7 +113,18 @@ class KdTree {
     frames_.clear();
     if (!slots_.empty()) build_node(0, static_cast<std::uint32_t>(slots_.size()), kNoParent);
     share_rows();
+    exact_enclosures_ = true;
+    for (const Slot& p : slots_)
+      for (int i = 0; i < D; ++i) {
+        const Iv v = scaled_iv(p.x[i], i);
+        exact_enclosures_ &= v.lo == v.hi;
+      }
   }
+
+  // Whether every point's enclosure is a point (scaled_iv exact): then a
+  // box's ends are coordinates of its own points, and a split of a node's
+  // points by (coordinate, id) leaves the two boxes apart or touching.
+  bool exact_enclosures() const { return exact_enclosures_; }
 
   // An enclosure of (x - origin) * scale for a coordinate x on `axis` of a
   // point given to build(): the difference is exact (see build), the product
@@ -259,6 +270,7 @@ class KdTree {
 
   std::array<double, D> origin_{};
   double scale_ = 1;
+  bool exact_enclosures_ = true;
   std::vector<Node> nodes_;  // preorder: a node's left child follows it
   std::vector<std::uint32_t> frame_of_;  // per node: its index in frames_, or kNoNode
   std::vector<NodeFrame<D>> frames_;

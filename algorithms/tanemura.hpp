@@ -197,6 +197,9 @@ class Tanemura {
     std::array<Iv, D> centre{};
     double r2 = 0;        // upper bound of the squared radius
     double r2_prune = 0;  // prune_r2(r2): algorithms/box_ball.hpp
+    // ball_of only: a box that holds the ball (centre +- sqrt(r2), rounded
+    // outwards), for the climb's stop (search).
+    std::array<double, D> reach_lo{}, reach_hi{};
     // A ball far larger than the facet (r2 > 2^20 R^2) is also tested in the
     // pencil form (NodeFrame::may_hold_inside): w = 2 (v - centre), v = the
     // facet vertex base_[0] (on every sphere of the pencil), |w| <= w_norm.
@@ -272,6 +275,11 @@ class Tanemura {
   template <Walk W>
   void visit(const Facet& f, std::uint32_t k);
   double distance2_to_target(const typename KdTree<D>::Node& n) const;
+  bool ball_inside(const typename KdTree<D>::Node& n) const {  // ball_'s reach strictly inside n's box
+    bool in = true;
+    for (int i = 0; i < D; ++i) in &= n.lo[i] < ball_.reach_lo[i] && ball_.reach_hi[i] < n.hi[i];
+    return in;
+  }
 
   K k_;
   const Point<D>* pts_ = nullptr;
@@ -412,6 +420,11 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   b.r2 = r2.hi;
   b.r2_prune = prune_r2(r2.hi);
   b.bounded = true;
+  const Iv r = Iv::exact(sqrt_up(r2.hi));
+  for (int i = 0; i < D; ++i) {
+    b.reach_lo[i] = (b.centre[i] - r).lo;
+    b.reach_hi[i] = (b.centre[i] + r).hi;
+  }
   if (r2.hi > 0x1p20 * fr2_.hi) {
     // v - centre = (v - C) - T n, with vc_[0] = v - C.
     Iv w2{0, 0};
@@ -885,8 +898,17 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
     long_facet |= (b > first ? b - first : first - b) > kNearSlots;
   }
   if (!long_facet) {
-    for (std::uint32_t k = first_leaves_[0]; k != KdTree<D>::root(); k = tree_.parent(k))
+    // The climb stops once the ball lies strictly inside the box of the
+    // subtree covered so far (k's). Its sibling subtrees on the way up hold
+    // points beyond a split of k's points; with every enclosure a point
+    // (exact_enclosures), k's box ends at k's own extreme coordinates,
+    // within each split, so those points are all outside the ball. Most of
+    // a climb on uniform input: a 2D search at 10^6 visited 24 nodes.
+    const bool may_stop = tree_.exact_enclosures();
+    for (std::uint32_t k = first_leaves_[0]; k != KdTree<D>::root(); k = tree_.parent(k)) {
+      if (may_stop && ball_valid_ && ball_.bounded && ball_inside(tree_.node(k))) break;
       visit<Walk::one_climb>(f, tree_.sibling(k));
+    }
     return best_;
   }
   std::array<std::uint32_t, D> at = first_leaves_;

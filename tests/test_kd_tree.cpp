@@ -57,8 +57,8 @@ using Q = boost::multiprecision::mpq_rational;
 
 // Every box encloses its points' exact scaled coordinates, and is the union
 // of their enclosures (the build takes most boxes from the extreme
-// coordinates alone); every point interval of scaled_iv is the exact value.
-// Returns the translated axes.
+// coordinates alone); every point interval of scaled_iv is the exact value;
+// exact_enclosures() says whether all are points. Returns the translated axes.
 template <int D>
 int check_tree(const std::vector<Point<D>>& pts) {
   std::vector<std::uint32_t> ids(pts.size());
@@ -67,6 +67,10 @@ int check_tree(const std::vector<Point<D>>& pts) {
   tree.build(pts, ids);
   int translated = 0;
   for (int i = 0; i < D; ++i) translated += tree.origin(i) != 0;
+  bool all_points = true;  // exact_enclosures(), independently
+  for (const Point<D>& p : pts)
+    for (int i = 0; i < D; ++i) all_points &= Q(tree.scaled_iv(p[i], i).lo) == Q(tree.scaled_iv(p[i], i).hi);
+  REQUIRE(tree.exact_enclosures() == all_points);
   for (std::size_t k = 0; k < tree.node_count(); ++k) {
     const auto& n = tree.node(static_cast<std::uint32_t>(k));
     for (int i = 0; i < D; ++i) {
@@ -193,6 +197,16 @@ TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[k
         if (x != 0) edge.push_back({-x, x});
       }
     CHECK(check_tree<2>(edge) == 0);
+    // exact_enclosures() both ways: the scaled values below 2^-1000 are
+    // widened; 2^-1000 itself is not.
+    std::vector<std::uint32_t> all(edge.size());
+    std::iota(all.begin(), all.end(), 0u);
+    KdTree<2> tree;
+    tree.build(edge, all);
+    CHECK(!tree.exact_enclosures());
+    const std::vector<Point2> at_edge{{1, 1}, {-1, -1}, {0x1p-999, -0x1p-999}};
+    tree.build(at_edge, {0, 1, 2});
+    CHECK(tree.exact_enclosures());
   }
   // Extreme doubles (DBL_MAX beside subnormals, both signs) and uniform [0, 1]
   // (translating it by 0.5 would make inexact differences): not translated.
