@@ -72,8 +72,9 @@ class KdTree {
 
   // Builds the tree on pts[ids[k]] (distinct points, at least one).
   void build(std::span<const Point<D>> pts, const std::vector<std::uint32_t>& ids) {
-    std::vector<Slot> slots = huge_vector<Slot>(ids.size());
-    for (std::size_t k = 0; k < ids.size(); ++k) slots[k] = {pts[ids[k]], ids[k]};
+    std::vector<Slot> slots;
+    reserve_huge(slots, ids.size());
+    for (const std::uint32_t id : ids) slots.push_back({pts[id], id});
     build(std::move(slots), pts.size());
   }
   // The same on the points of `slots` (distinct, in any order), whose ids

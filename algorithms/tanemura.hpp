@@ -1007,8 +1007,9 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
   // records hold their points in that order, for the tree (whose splits, and
   // so the searches' order and the inexact kernels' answers, depend on it).
   using Slot = typename KdTree<D>::Slot;
-  std::vector<Slot> slots = huge_vector<Slot>(n);
-  for (std::uint32_t i = 0; i < n; ++i) slots[i] = {pts[i], i};
+  std::vector<Slot> slots;
+  reserve_huge(slots, n);
+  for (std::uint32_t i = 0; i < n; ++i) slots.push_back({pts[i], i});
   std::sort(slots.begin(), slots.end(),
             [](const Slot& a, const Slot& b) { return a.x < b.x || (a.x == b.x && a.id < b.id); });
   for (std::size_t k = 0; k < n; ++k) {
