@@ -196,7 +196,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   for (std::uint32_t i = 0; i < n; ++i) {
     if (merged_.is_initial(i)) continue;  // already a vertex
     if (!insert(i)) {
-      res.outcome = RunResult::Outcome::failed;
+      res.outcome = RunOutcome::failed;
       res.message = message_;
       merged_.stop_before(i);
       break;
@@ -204,7 +204,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   }
 
   if constexpr (!K::exact) res.merged_into = merged_.merged_into();  // read by the check below
-  if (res.outcome == RunResult::Outcome::ok) {
+  if (res.outcome == RunOutcome::ok) {
     if constexpr (!K::exact) {
       // A cavity that swallowed a vertex leaves it out of every simplex.
       std::vector<bool> present(n, false);
@@ -213,7 +213,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
       });
       for (std::uint32_t i = 0; i < n; ++i)
         if (res.merged_into[i] == i && !present[i]) {
-          res.outcome = RunResult::Outcome::failed;
+          res.outcome = RunOutcome::failed;
           res.message = "the vertex of insertion #" + std::to_string(i) + " was lost (enclosed in a cavity)";
           break;
         }
@@ -232,7 +232,7 @@ TriangulationResult BowyerWatson<K, D>::run(std::span<const Point<D>> pts) {
   };
   cavity_sizes_.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (mesh() is then empty).
-  if (res.outcome == RunResult::Outcome::ok) res.simplices = mesh_.take_finite_simplices();
+  if (res.outcome == RunOutcome::ok) res.simplices = mesh_.take_finite_simplices();
   if constexpr (K::exact) res.merged_into = merged_.merged_into();  // the mesh is gone: not part of the peak
   return res;
 }

@@ -29,7 +29,7 @@
 namespace dlab {
 
 struct FlipExistingResult {
-  RunResult::Outcome outcome = RunResult::Outcome::ok;
+  RunOutcome outcome = RunOutcome::ok;
   std::string message;                  // why it failed (bad input, bound exceeded)
   std::vector<std::uint32_t> simplices;  // the final triangulation (finite simplices)
   std::uint64_t flips = 0, passes = 0;
@@ -140,7 +140,7 @@ FlipExistingResult flip_existing(std::span<const Point<D>> pts, std::span<const 
   Mesh<D> m;
   const std::string err = flip_existing_detail::build<D>(k, pts, simplices, m, res.bad_simplex);
   if (!err.empty()) {
-    res.outcome = RunResult::Outcome::failed;
+    res.outcome = RunOutcome::failed;
     res.message = "not a triangulation: " + err;
     return res;
   }
@@ -158,13 +158,13 @@ FlipExistingResult flip_existing(std::span<const Point<D>> pts, std::span<const 
       for (int f = 0; f < V && m.alive(s); ++f) {
         const R r = fl.try_flip(s, f);
         if (r == R::broken) {
-          res.outcome = RunResult::Outcome::failed;
+          res.outcome = RunOutcome::failed;
           res.message = "a flip found an inconsistent mesh";
           return res;
         }
         if (r != R::flipped) continue;
         if (fl.counts.total() > bound) {
-          res.outcome = RunResult::Outcome::failed;
+          res.outcome = RunOutcome::failed;
           res.message = "flip count exceeded its bound of " + std::to_string(bound);
           return res;
         }

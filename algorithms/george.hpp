@@ -478,7 +478,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   if (opt_.enclosing_box) {
     auto corners = enclosing_box_corners<D>(pts);
     if (!corners || !snap_box_corners<K, D>(k_, pts, *corners)) {
-      res.outcome = RunResult::Outcome::failed;
+      res.outcome = RunOutcome::failed;
       res.message = corners ? "the enclosing box's corners are not strictly outside the points on the kernel's grid"
                             : "the enclosing box does not fit in finite doubles";
       return res;
@@ -500,7 +500,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   for (std::uint32_t i = 0; i < n; ++i) {
     if (merged_.is_initial(i)) continue;  // already a vertex
     if (!insert(i)) {
-      res.outcome = RunResult::Outcome::failed;
+      res.outcome = RunOutcome::failed;
       res.message = message_;
       merged_.stop_before(i);
       break;
@@ -528,7 +528,7 @@ TriangulationResult George<K, D>::run(std::span<const Point<D>> pts) {
   cavity_sizes_.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (mesh() is then
   // empty); the simplices of the enclosing box's corners are left out.
-  if (res.outcome == RunResult::Outcome::ok)
+  if (res.outcome == RunOutcome::ok)
     res.simplices = mesh_.take_finite_simplices([&](const std::uint32_t* v) {
       const bool keep = std::all_of(v, v + V, [&](std::uint32_t id) { return id < n; });
       box_removed_ += keep ? 0 : 1;

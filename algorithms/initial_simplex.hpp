@@ -100,11 +100,11 @@ InitialSimplex<D> initial_simplex_or_outcome(const K& k, std::span<const Point<D
                                              TriangulationResult& res) {
   InitialSimplex<D> init = find_initial_simplex<D>(k, pts);
   if (init.found) return init;
-  res.outcome = RunResult::Outcome::lower_dimensional;
+  res.outcome = RunOutcome::lower_dimensional;
   res.message = init.why;
   if constexpr (!K::exact) {
     if (find_initial_simplex<D>(MpKernel{}, pts).found) {
-      res.outcome = RunResult::Outcome::failed;
+      res.outcome = RunOutcome::failed;
       res.message = "the " + std::string(K::name) + " kernel sees the input as lower-dimensional (" +
                     init.why + "), but it is not";
     }

@@ -398,14 +398,14 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   for (std::uint32_t i = 0; i < n; ++i) {
     if (merged_[i] != kNotProcessed) continue;
     if (!insert(i)) {
-      res.outcome = RunResult::Outcome::failed;
+      res.outcome = RunOutcome::failed;
       res.message = message_;
       break;
     }
     if (!mesh_.alive(last_)) last_ = created_.empty() ? 0 : created_.front();
   }
 
-  if (res.outcome == RunResult::Outcome::ok) {
+  if (res.outcome == RunOutcome::ok) {
     if constexpr (!K::exact) {
       std::vector<bool> present(n, false);
       mesh_.for_each_finite([&](std::uint32_t s) {
@@ -413,7 +413,7 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
       });
       for (std::uint32_t i = 0; i < n; ++i)
         if (merged_[i] == i && !present[i]) {
-          res.outcome = RunResult::Outcome::failed;
+          res.outcome = RunOutcome::failed;
           res.message = "vertex " + std::to_string(i) + " was lost";
           break;
         }
@@ -451,7 +451,7 @@ TriangulationResult Lawson<K, D>::run(std::span<const Point<D>> pts) {
   res.counters.push_back({"mesh_bytes_reserved", mesh_.bytes_reserved()});
   // Last, as it hands the mesh's memory over to the result (mesh() is then
   // empty), unless the mesh is kept.
-  if (res.outcome == RunResult::Outcome::ok)
+  if (res.outcome == RunOutcome::ok)
     res.simplices = keep_mesh_ ? Mesh<D>(mesh_).take_finite_simplices() : mesh_.take_finite_simplices();
   res.merged_into = std::move(merged_);  // after the mesh is gone: not part of the peak
   return res;

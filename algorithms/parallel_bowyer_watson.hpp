@@ -507,7 +507,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   }
   mesh_.adjust_live(live);
   if (failed_.load(std::memory_order_relaxed)) {
-    res.outcome = RunResult::Outcome::failed;
+    res.outcome = RunOutcome::failed;
     for (const Worker& w : workers_)
       if (res.message.empty()) res.message = w.message;
   }
@@ -543,7 +543,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   sizes.append_to(res.counters);
   // Last, as it hands the mesh's memory over to the result (Mesh::take_finite_simplices:
   // mesh() is then empty unless keep_mesh() was called).
-  if (res.outcome == RunResult::Outcome::ok)
+  if (res.outcome == RunOutcome::ok)
     res.simplices = keep_mesh_ ? Mesh<D>(mesh_).take_finite_simplices() : mesh_.take_finite_simplices();
   res.merged_into = std::move(merged_);
   return res;

@@ -1115,7 +1115,7 @@ TriangulationResult Tanemura<K, D>::run(std::span<const Point<D>> pts) {
       flat_seen_.capacity() * 4 + flat_mask_.capacity() + flat_ball_at_.capacity() * 4 + (on_flat_.capacity() + off_flat_.capacity()) * 4 +
       flat_balls_.capacity() * sizeof(Ball) + flat_planes_.capacity() * sizeof(FlatPlane);
   if (!ok) {
-    res.outcome = RunResult::Outcome::failed;
+    res.outcome = RunOutcome::failed;
     res.message = message_;
   } else {
     res.simplices = std::move(out_);

@@ -6,14 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "variants/run.hpp"
+#include "algorithms/run_outcome.hpp"
+#include "predicates/counters.hpp"
 
 namespace dlab {
 
 inline constexpr std::uint32_t kNotProcessed = 0xFFFFFFFFu;
 
 struct TriangulationResult {
-  RunResult::Outcome outcome = RunResult::Outcome::ok;
+  RunOutcome outcome = RunOutcome::ok;
   std::string message;
   // (D+1) ids into the sequence per finite simplex, positively oriented.
   std::vector<std::uint32_t> simplices;

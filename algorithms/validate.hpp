@@ -57,7 +57,7 @@
 #include <vector>
 
 #include "predicates/point.hpp"
-#include "variants/run.hpp"
+#include "predicates/point_set.hpp"
 
 namespace dlab {
 

@@ -30,7 +30,7 @@ std::vector<std::uint32_t> non_delaunay_start(const std::vector<Point<D>>& pts, 
   Lawson<K, D> dt;
   dt.keep_mesh();
   const TriangulationResult t = dt.run(std::span<const Point<D>>(pts));
-  if (t.outcome != RunResult::Outcome::ok) return {};
+  if (t.outcome != RunOutcome::ok) return {};
   Mesh<D> m = dt.mesh();
   const K k;
   auto positive = [&](const Simplex& v) {

@@ -21,9 +21,9 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/counters.hpp"
 #include "predicates/kernel.hpp"
 #include "predicates/stages.hpp"
-#include "variants/run.hpp"
 
 namespace dlab {
 

@@ -71,7 +71,7 @@ void check_all_thread_counts(const std::vector<Point<D>>& pts, std::uint64_t see
   const std::vector<Point<D>> seq = in_brio_order<D>(pts, seed);
   BowyerWatson<K, D> serial;
   const TriangulationResult s = serial.run(std::span<const Point<D>>(seq));
-  REQUIRE(s.outcome == RunResult::Outcome::ok);
+  REQUIRE(s.outcome == RunOutcome::ok);
   const auto expected = canonical_simplices<D>(first_occurrence<D>(seq, s.simplices));
   for (unsigned t : {1u, 2u, 3u, 4u, 8u}) {
     ParallelBowyerWatson<K, D> par;
@@ -79,7 +79,7 @@ void check_all_thread_counts(const std::vector<Point<D>>& pts, std::uint64_t see
     par.keep_mesh();
     const TriangulationResult p = par.run(std::span<const Point<D>>(seq));
     INFO("threads " << t << ", " << seq.size() << " points in " << D << "D");
-    REQUIRE(p.outcome == RunResult::Outcome::ok);
+    REQUIRE(p.outcome == RunOutcome::ok);
     REQUIRE(par.mesh().check_structure().empty());
     const std::vector<std::uint32_t> mapped = first_occurrence<D>(seq, p.simplices);
     const bool same = canonical_simplices<D>(mapped) == expected;  // (not printed: thousands of simplices)

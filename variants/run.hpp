@@ -10,44 +10,13 @@
 #include <utility>
 #include <vector>
 
-#include "predicates/point.hpp"
+#include "algorithms/run_outcome.hpp"
+#include "predicates/counters.hpp"
+#include "predicates/point_set.hpp"
 
 namespace dlab {
 
 struct ValidationReport;  // algorithms/validate.hpp
-
-// Points of one dimension (2 or 3); only the matching vector is used.
-struct PointSet {
-  int dimension = 2;
-  std::vector<Point2> p2;
-  std::vector<Point3> p3;
-  std::size_t size() const { return dimension == 2 ? p2.size() : p3.size(); }
-};
-
-// The vector of dimension D in `ps`.
-template <int D>
-std::vector<Point<D>>& points_of(PointSet& ps) {
-  if constexpr (D == 2)
-    return ps.p2;
-  else
-    return ps.p3;
-}
-template <int D>
-const std::vector<Point<D>>& points_of(const PointSet& ps) {
-  if constexpr (D == 2)
-    return ps.p2;
-  else
-    return ps.p3;
-}
-
-// A point set of dimension D holding `pts`.
-template <int D>
-PointSet point_set(std::vector<Point<D>> pts) {
-  PointSet ps;
-  ps.dimension = D;
-  points_of<D>(ps) = std::move(pts);
-  return ps;
-}
 
 struct RunOptions {
   std::string algorithm = "bowyer-watson";  // bowyer-watson | lawson | tanemura | george
@@ -77,15 +46,8 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Named counters, in a fixed order so that --stats output is byte-identical.
-using Counters = std::vector<std::pair<std::string, std::uint64_t>>;
-
 struct RunResult {
-  enum class Outcome {
-    ok,                 // simplices hold the triangulation
-    lower_dimensional,  // fewer than d+1 distinct points, or all collinear/coplanar: no simplex
-    failed              // the algorithm detected a failure (inexact kernels only)
-  };
+  using Outcome = RunOutcome;  // ok, lower_dimensional, failed (algorithms/run_outcome.hpp)
   Outcome outcome = Outcome::ok;
   std::string message;  // why lower-dimensional, or what failed
   int dimension = 2;
