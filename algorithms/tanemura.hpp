@@ -68,6 +68,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -82,6 +83,7 @@
 #include "algorithms/interval.hpp"
 #include "algorithms/kd_tree.hpp"
 #include "algorithms/oriented.hpp"
+#include "algorithms/pencil_parameter.hpp"
 #include "algorithms/tanemura_start.hpp"
 #include "algorithms/triangulation_result.hpp"
 #include "predicates/mp_kernel.hpp"
@@ -400,17 +402,36 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   double near = l1(pts_[c], pts_[base_[0]]);
   for (int j = 1; j < D; ++j)
     if (const double dj = l1(pts_[c], pts_[base_[j]]); dj < near) near = dj, k = j;
-  Iv num{0, 0}, cross{0, 0}, den{0, 0};
+  // T: in plain doubles with an a-priori bound where c and v have exact
+  // scaled coordinates (algorithms/pencil_parameter.hpp), else in intervals.
+  // Exact kernels only: an inexact kernel's answer can depend on which points
+  // the pruning leaves, and the corpus records those answers.
+  std::array<double, D> x, q;
+  bool exact_points = K::exact;
   for (int i = 0; i < D; ++i) {
-    const Iv e = tree_.scaled_iv(pts_[c][i], i) - bq_[k][i];
-    num = num + sq(e);
-    cross = cross + e * vc_[k][i];
-    den = den + nrm_[i] * e;
+    const Iv xi = tree_.scaled_iv(pts_[c][i], i);
+    x[i] = xi.lo;
+    q[i] = bq_[k][i].lo;
+    exact_points &= xi.lo == xi.hi && bq_[k][i].lo == bq_[k][i].hi;
   }
-  num = num + (cross + cross);
-  const Iv t = num / (den + den);
-  if (!t.bounded()) return b;
-  const Iv T = Iv::exact(t.hi);
+  const std::optional<double> fast =
+      exact_points ? pencil_parameter_upper<D>(x, q, vc_[k], nrm_) : std::nullopt;
+  Iv T;
+  if (fast) {
+    T = Iv::exact(*fast);
+  } else {
+    Iv num{0, 0}, cross{0, 0}, den{0, 0};
+    for (int i = 0; i < D; ++i) {
+      const Iv e = tree_.scaled_iv(pts_[c][i], i) - bq_[k][i];
+      num = num + sq(e);
+      cross = cross + e * vc_[k][i];
+      den = den + nrm_[i] * e;
+    }
+    num = num + (cross + cross);
+    const Iv t = num / (den + den);
+    if (!t.bounded()) return b;
+    T = Iv::exact(t.hi);
+  }
   for (int i = 0; i < D; ++i) {
     b.centre[i] = fcen_[i] + T * nrm_[i];
     if (!b.centre[i].bounded()) return b;
