@@ -52,11 +52,12 @@
 //     about one box test per level. The
 //     pruning ball is a sphere of the pencil through f whose open-side part
 //     contains the best candidate's sphere's (ball_of), its centre and radius
-//     ENCLOSED by interval arithmetic (algorithms/interval.hpp), so a skipped
-//     box never meets the ball: the tree never decides the winner. The ball
-//     is recomputed once per leaf that improved the best (once for all the
-//     first leaves), not per improvement: the old one still contains the new
-//     best's open-side cap. (A uniform bucket grid, used here before, failed
+//     ENCLOSED by interval arithmetic (algorithms/interval.hpp) from a proved
+//     upper bound of its pencil parameter (algorithms/pencil_parameter.hpp),
+//     so a skipped box never meets the ball: the tree never decides the
+//     winner. The ball is recomputed once per leaf that improved the best
+//     (once for all the first leaves), not per improvement: the old one
+//     still contains the new best's open-side cap. (A uniform bucket grid, used here before, failed
 //     on uneven sets: see kd_tree.hpp.)
 //   * Inexact kernels: a facet met by a third simplex, or twice on the same
 //     side, a simplex budget exceeded, or a point left out end the run with
