@@ -76,6 +76,20 @@ Q centre_exact(const Case<D>& c) {
   return num / (2 * den);
 }
 
+// x, q, g and n of integers in [-bound, bound], point enclosures.
+template <int D>
+Case<D> small_integer_case(std::mt19937_64& rng, int bound) {
+  std::uniform_int_distribution<int> small(-bound, bound);
+  Case<D> c;
+  for (int i = 0; i < D; ++i) {
+    c.x[i] = small(rng);
+    c.q[i] = small(rng);
+    c.g[i] = Iv::exact(small(rng));
+    c.n[i] = Iv::exact(small(rng));
+  }
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("pencil parameter: the widths' terms are tight on exact data", "[pencil_parameter]") {
@@ -86,19 +100,12 @@ TEST_CASE("pencil parameter: the widths' terms are tight on exact data", "[penci
   // that Δb = beta |b|. Where t > 0 the largest error is then the bound
   // (ΔN + |t| Δb) / (|b| - Δb) itself.
   std::mt19937_64 rng(20261128);
-  std::uniform_int_distribution<int> small(-8, 8);
   double worst_ratio = 0;  // largest (t* - N/b) / (T - N/b) seen
   int answered = 0, tries = 0;
   // beta > 1/2: Δb > |b| / 2, where the bound does not apply: no answer.
   for (double beta : {0.25, 0.45, 0.49, 0.499, 0.6, 0.9}) {
     for (int trial = 0; trial < 400; ++trial) {
-      Case<3> c;
-      for (int i = 0; i < 3; ++i) {
-        c.x[i] = small(rng);
-        c.q[i] = small(rng);
-        c.g[i] = Iv::exact(small(rng));
-        c.n[i] = Iv::exact(small(rng));
-      }
+      Case<3> c = small_integer_case<3>(rng, 8);
       double b = 0, se = 0;
       for (int i = 0; i < 3; ++i) b += 2 * c.n[i].hi * (c.x[i] - c.q[i]), se += std::fabs(c.x[i] - c.q[i]);
       if (b == 0) continue;
@@ -138,20 +145,13 @@ TEST_CASE("pencil parameter: point enclosures, only the quotient rounded", "[pen
   // Small integers and point enclosures: N and b are exact, t* = N / b, and
   // only fl(N / b) errs (half the time downwards), and n.e = 0 gives no
   // answer. (The bound's u'|t| and the upward rounding of t + Δt are there for
-  // the quotient's and the sum's roundings; its rounding terms for b, at
-  // least 2^-49 |t|, leave room for both here and in every case above, so
+  // the quotient's and the sum's roundings; its rounding term for b, at
+  // least 4u |t|, leaves room for both here and in every case above, so
   // dropping them is not caught.)
   std::mt19937_64 rng(53);
-  std::uniform_int_distribution<int> small(-1000, 1000);
   int rounded_down = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    Case<2> c;
-    for (int i = 0; i < 2; ++i) {
-      c.x[i] = small(rng);
-      c.q[i] = small(rng);
-      c.g[i] = Iv::exact(small(rng));
-      c.n[i] = Iv::exact(small(rng));
-    }
+    const Case<2> c = small_integer_case<2>(rng, 1000);
     const std::optional<double> T = pencil_parameter_upper<2>(c.x, c.q, c.g, c.n);
     const std::optional<Q> top = largest_exact<2>(c);
     if (!top) {
