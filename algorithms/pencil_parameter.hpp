@@ -79,7 +79,7 @@ std::optional<double> pencil_parameter_upper(const std::array<double, D>& x, con
   const double db = 2 * (0x1.1p-51 * sD + (1 + 0x1p-51) * sN + 0x1p-1073) * slack + tiny;
   const double ab = fabs(b);
   // Each test is false for NaN: every NaN or infinity gives no answer.
-  if (!(ab >= 0x1p-900 && ab < HUGE_VAL && ab > 2 * db && dn < HUGE_VAL && std::fabs(num) < HUGE_VAL))
+  if (!(ab >= 0x1p-900 && ab < HUGE_VAL && ab > 2 * db && dn < HUGE_VAL && fabs(num) < HUGE_VAL))
     return std::nullopt;
   const double t = num / b, at = fabs(t);
   const double dt = ((dn + (1 + 0x1p-52) * at * db) / Iv::lower_rel(ab - db) + 0x1p-52 * at + 0x1p-1074) * slack + tiny;

@@ -57,8 +57,8 @@
 //     so a skipped box never meets the ball: the tree never decides the
 //     winner. The ball is recomputed once per leaf that improved the best
 //     (once for all the first leaves), not per improvement: the old one
-//     still contains the new best's open-side cap. (A uniform bucket grid, used here before, failed
-//     on uneven sets: see kd_tree.hpp.)
+//     still contains the new best's open-side cap. (A uniform bucket grid,
+//     used here before, failed on uneven sets: see kd_tree.hpp.)
 //   * Inexact kernels: a facet met by a third simplex, or twice on the same
 //     side, a simplex budget exceeded, or a point left out end the run with
 //     Outcome::failed; every loop is bounded.
@@ -407,13 +407,14 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   // scaled coordinates (algorithms/pencil_parameter.hpp), else in intervals.
   // Exact kernels only: an inexact kernel's answer can depend on which points
   // the pruning leaves, and the corpus records those answers.
+  std::array<Iv, D> xs;
   std::array<double, D> x, q;
   bool exact_points = K::exact;
   for (int i = 0; i < D; ++i) {
-    const Iv xi = tree_.scaled_iv(pts_[c][i], i);
-    x[i] = xi.lo;
+    xs[i] = tree_.scaled_iv(pts_[c][i], i);
+    x[i] = xs[i].lo;
     q[i] = bq_[k][i].lo;
-    exact_points &= xi.lo == xi.hi && bq_[k][i].lo == bq_[k][i].hi;
+    exact_points &= xs[i].lo == xs[i].hi && bq_[k][i].lo == bq_[k][i].hi;
   }
   const std::optional<double> fast =
       exact_points ? pencil_parameter_upper<D>(x, q, vc_[k], nrm_) : std::nullopt;
@@ -423,7 +424,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
   } else {
     Iv num{0, 0}, cross{0, 0}, den{0, 0};
     for (int i = 0; i < D; ++i) {
-      const Iv e = tree_.scaled_iv(pts_[c][i], i) - bq_[k][i];
+      const Iv e = xs[i] - bq_[k][i];
       num = num + sq(e);
       cross = cross + e * vc_[k][i];
       den = den + nrm_[i] * e;
