@@ -16,13 +16,14 @@
 // the records of an exact kernel's search come in cycle order
 // (search_cavity_ccw), and each new triangle's successor is the next record;
 // otherwise (cavities of up to 32 triangles) each new triangle finds its
-// successor through a 64-entry table of the boundary edges' start vertices.  Otherwise they
-// are paired through a small open-addressing table keyed by those D-1 vertex
-// ids (design.md section 7 item 3 uses a 32x32 table on local ids; a hash on
-// global ids does the same job with no local numbering), marked by a stamp so
-// it is never cleared.  A key seen a third time, or left unpaired, means the
-// cavity boundary was not a manifold: reported, never trusted (inexact
-// kernels can produce such cavities).
+// successor through a 64-entry table of the boundary edges' start vertices.
+// Larger 2D cavities, and every 3D one, pair their new facets through a small
+// open-addressing table keyed by those D-1 vertex ids (design.md section 7
+// item 3 uses a 32x32 table on local ids; a hash on global ids does the same
+// job with no local numbering), marked by a stamp so it is never cleared.  A
+// key seen a third time, or left unpaired, means the cavity boundary was not
+// a manifold: reported, never trusted (inexact kernels can produce such
+// cavities).
 //
 // New simplices reuse the cavity's slots first; extra cavity slots go back to
 // the free list.
@@ -110,9 +111,9 @@ class Restar {
     bool ok;
     if constexpr (D == 2)
       ok = (!verify && link_chain(m, records)) ||
-           (records.size() <= 32 ? link_cycle(m, records, error) : link_hashed(m, records, error));
+           (records.size() <= 32 ? link_cycle(m, records, error) : link_facets(m, records, error));
     else
-      ok = link_local(m, records, error) || (error.empty() && link_hashed(m, records, error));
+      ok = link_facets(m, records, error);
     if (!ok) return kNoNeighbour;
     if (verify) {  // inexact kernels: every new link must be mutual
       for (std::size_t r = 0; r < records.size(); ++r)
@@ -197,7 +198,7 @@ class Restar {
 
 
   // kEdge[slot][f]: the slots of (a, b) in the oriented facet opposite f,
-  // rotated to start at p = slot `slot` (see link_local).
+  // rotated to start at p = slot `slot` (see link_facets).
   static constexpr std::array<std::array<std::array<int, 2>, 4>, 4> kEdge = [] {
     std::array<std::array<std::array<int, 2>, 4>, 4> t{};
     for (int slot = 0; slot < 4; ++slot)
@@ -218,64 +219,72 @@ class Restar {
     return t;
   }();
 
-  // 3D (HXT's scheme, Marot et al. 2019, re-derived): boundary vertices get
-  // local ids (<= 32, else fall back to hashing; a 128-entry table vertex ->
-  // id, load <= 36/128, instead of a word per vertex of the mesh, which would
-  // add 4 to 6 bytes per point to the peak memory); each internal facet
-  // (p, a, b) of a new tetrahedron is keyed by (a, b), ordered so that the
-  // tetrahedron's own remaining vertex is on the positive side of the
-  // oriented facet; the tetrahedron across it sees the facet reversed, (b, a).
-  // One pass: a facet whose partner is waiting at table[b][a] is linked to it
-  // (both ways) and the entry is marked paired; otherwise it waits at
-  // table[a][b].  So every key (a, b) must be used once each way: a facet
-  // that finds its partner already paired or its own place taken (a facet of
-  // more than two new simplices), or one left waiting at the end (no
-  // partner), is an error, also for inexact kernels, whose links are then
-  // mutual whatever their cavity was.  Returns false with an empty error when
-  // the cavity is too large.
+  // Records not in cycle order (2D), and every 3D cavity: each internal facet
+  // of a new simplex is keyed by its boundary vertices and paired with the
+  // facet of the same key in one pass over an open-addressing table of
+  // 2^k >= 4 D records entries, marked by a stamp so that it is never
+  // cleared.  2D: the facet (p, u) is keyed by u, the same from both sides.
+  // 3D: the facet (p, a, b) is keyed by (a, b) in the order that puts the
+  // tetrahedron's own remaining vertex on the positive side of the oriented
+  // facet; the tetrahedron across it sees the facet reversed, (b, a) (HXT's
+  // directed keys, Marot et al. 2019, re-derived; HXT pairs them in a 32x32
+  // table on local vertex ids, which costs a vertex -> id lookup per vertex:
+  // probing on the global ids costs less, papers/triangulation_costs.md,
+  // session 31).  Both orders of an edge hash alike (on the smaller key).
+  // A facet whose partner waits is linked to it (both ways) and the entry is
+  // marked paired; otherwise it waits under its own key.  So every key must
+  // be used once each way: a facet that finds its partner already paired or
+  // its own key taken (a facet of more than two new simplices), or one left
+  // waiting at the end (no partner), is an error, also for inexact kernels,
+  // whose links are then mutual whatever their cavity was.
   template <class M>
-  bool link_local(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
-    if (++local_stamp_ == 0) {  // wrapped: clear once every 2^32 uses
-      for (auto& e : local_) e.stamp = 0;
-      for (auto& e : pair_) e.stamp = 0;
-      local_stamp_ = 1;
+  bool link_facets(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
+    const std::size_t facets = records.size() * D;  // facet registrations
+    if (table_.size() < 2 * facets) {
+      std::size_t size = 64;
+      while (size < 2 * facets) size *= 2;
+      table_.assign(size, Entry{});
+      stamp_ = 0;
+      shift_ = 64;
+      for (std::size_t t = size; t > 1; t >>= 1) --shift_;
     }
-    std::uint32_t count = 0;
-    // A vertex not seen in this insertion gets the next id.
-    auto local = [&](std::uint32_t v) -> std::uint32_t {
-      unsigned h = (v * 0x9E3779B1u) >> 25;
-      while (local_[h].stamp == local_stamp_ && local_[h].vertex != v) h = (h + 1) & 127;
-      if (local_[h].stamp != local_stamp_) local_[h] = {v, count++, local_stamp_};
-      return local_[h].value;
-    };
+    if (++stamp_ == 0) {  // wrapped: clear once every 2^32 uses
+      for (auto& e : table_) e.stamp = 0;
+      stamp_ = 1;
+    }
+    const std::size_t mask = table_.size() - 1;
     std::uint32_t waiting = 0;
     for (std::size_t r = 0; r < records.size(); ++r) {
-      const int slot = records[r].slot;
-      std::uint32_t lv[4];  // local ids of the record's vertices (p's unused)
-      for (int i = 0; i < 4; ++i) lv[i] = i == slot ? 0u : local(records[r].v[i]);
-      if (count > 32) return false;
-      // The facet opposite slot f, its slots in increasing order, is oriented
-      // with vertex f on its positive side when f is even (moving slot f to
-      // the front of a positive simplex takes f transpositions); reverse it
-      // when f is odd.  Rotated to start at p, it reads (p, a, b): kEdge.
-      for (int f = 0; f < 4; ++f) {
+      const BoundaryRecord<D>& rec = records[r];
+      const int slot = rec.slot;
+      for (int f = 0; f < V; ++f) {
         if (f == slot) continue;
-        const std::uint32_t a = lv[kEdge[slot][f][0]], b = lv[kEdge[slot][f][1]];
+        std::uint64_t own, partner;
+        if constexpr (D == 2) {
+          own = partner = rec.v[3 - f - slot];
+        } else {
+          const std::uint32_t a = rec.v[kEdge[slot][f][0]], b = rec.v[kEdge[slot][f][1]];
+          own = (std::uint64_t(a) << 32) | b;
+          partner = (std::uint64_t(b) << 32) | a;
+        }
         const std::uint32_t enc = Mesh<D>::encode(ids_[r], f);
-        PairEntry& partner = pair_[b * 32 + a];
-        if (partner.stamp == local_stamp_ && partner.value != kPaired) {
-          m.link(enc, partner.value);
-          partner.value = kPaired;
-          --waiting;
-          continue;
+        std::size_t h = static_cast<std::size_t>((std::min(own, partner) * 0x9E3779B97F4A7C15ull) >> shift_);
+        bool own_taken = false;
+        for (; table_[h].stamp == stamp_; h = (h + 1) & mask) {
+          Entry& e = table_[h];
+          if (e.key == partner) {
+            if (e.value == kPaired) goto not_a_manifold;
+            m.link(enc, e.value);
+            e.value = kPaired;
+            --waiting;
+            goto next_facet;
+          }
+          own_taken |= e.key == own;
         }
-        PairEntry& own = pair_[a * 32 + b];
-        if (partner.stamp == local_stamp_ || own.stamp == local_stamp_) {
-          error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
-          return false;
-        }
-        own = {enc, local_stamp_};
+        if (own_taken) goto not_a_manifold;
+        table_[h] = {own, enc, stamp_};
         ++waiting;
+      next_facet:;
       }
     }
     if (waiting != 0) {
@@ -283,71 +292,9 @@ class Restar {
       return false;
     }
     return true;
-  }
-
-  template <class M>
-  bool link_hashed(M& m, const std::vector<BoundaryRecord<D>>& records, std::string& error) {
-    const std::size_t inserts = records.size() * D;  // facet registrations
-    if (table_.size() < 2 * inserts) {
-      std::size_t size = 64;
-      while (size < 2 * inserts) size *= 2;
-      table_.assign(size, Entry{});
-      stamp_ = 0;
-    }
-    if (++stamp_ == 0) {  // wrapped: clear once every 2^32 uses
-      for (auto& e : table_) e.stamp = 0;
-      stamp_ = 1;
-    }
-    const std::size_t mask = table_.size() - 1;
-    int shift = 64;
-    for (std::size_t t = table_.size(); t > 1; t >>= 1) --shift;
-
-    std::size_t pending = 0;
-    for (std::size_t r = 0; r < records.size(); ++r) {
-      const BoundaryRecord<D>& rec = records[r];
-      const std::uint32_t s = ids_[r];
-      for (int f = 0; f < V; ++f) {
-        if (f == rec.slot) continue;
-        // The facet opposite f holds p and the vertices in slots other than f and rec.slot.
-        std::uint64_t key;
-        if constexpr (D == 2) {
-          key = rec.v[3 - f - rec.slot];
-        } else {
-          std::uint32_t ab[2];
-          int n = 0;
-          for (int i = 0; i < V; ++i)
-            if (i != f && i != rec.slot) ab[n++] = rec.v[i];
-          std::uint32_t a = ab[0], b = ab[1];
-          if (a > b) std::swap(a, b);
-          key = (std::uint64_t(a) << 32) | b;
-        }
-        std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift);
-        for (;;) {
-          Entry& e = table_[h];
-          if (e.stamp != stamp_) {
-            e = Entry{key, Mesh<D>::encode(s, f), stamp_};
-            ++pending;
-            break;
-          }
-          if (e.key == key) {
-            if (e.value == kPaired) {
-              error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
-              return false;
-            }
-            m.link(e.value, Mesh<D>::encode(s, f));
-            e.value = kPaired;
-            --pending;
-            break;
-          }
-          h = (h + 1) & mask;
-        }
-      }
-    }
-    if (pending != 0) {
-      error = "cavity boundary is not closed (a new facet without a partner)";
-      return false;
-    }
-    return true;
+  not_a_manifold:
+    error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
+    return false;
   }
 
   struct Entry {
@@ -361,14 +308,9 @@ class Restar {
     std::uint32_t vertex = 0, value = 0, stamp = 0;
   };
   std::array<VertexEntry, 64> cycle_{};   // vertex -> record (link_cycle)
-  std::array<VertexEntry, 128> local_{};  // vertex -> local id (link_local)
-  struct PairEntry {
-    std::uint32_t value = 0, stamp = 0;
-  };
-  std::array<PairEntry, 32 * 32> pair_{};
-  std::uint32_t local_stamp_ = 0;
   std::uint32_t cycle_stamp_ = 0;
   std::uint32_t stamp_ = 0;
+  int shift_ = 64;  // 64 - log2(table_.size())
 };
 
 }  // namespace dlab
