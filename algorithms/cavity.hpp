@@ -21,8 +21,8 @@
 // open-addressing table keyed by those D-1 vertex ids (design.md section 7
 // item 3 uses a 32x32 table on local ids; a hash on global ids does the same
 // job with no local numbering), marked by a stamp so it is never cleared.  A
-// key seen a third time, or left unpaired, means the cavity boundary was not
-// a manifold: reported, never trusted (inexact kernels can produce such
+// key used too often, or left unpaired, means the cavity boundary was not a
+// manifold: reported, never trusted (inexact kernels can produce such
 // cavities).
 //
 // New simplices reuse the cavity's slots first; extra cavity slots go back to
@@ -198,7 +198,10 @@ class Restar {
 
 
   // kEdge[slot][f]: the slots of (a, b) in the oriented facet opposite f,
-  // rotated to start at p = slot `slot` (see link_facets).
+  // rotated to start at p = slot `slot` (see link_facets).  The facet
+  // opposite slot f, its slots in increasing order, is oriented with vertex f
+  // on its positive side when f is even (moving slot f to the front of a
+  // positive simplex takes f transpositions); reversed when f is odd.
   static constexpr std::array<std::array<std::array<int, 2>, 4>, 4> kEdge = [] {
     std::array<std::array<std::array<int, 2>, 4>, 4> t{};
     for (int slot = 0; slot < 4; ++slot)
@@ -221,9 +224,9 @@ class Restar {
 
   // Records not in cycle order (2D), and every 3D cavity: each internal facet
   // of a new simplex is keyed by its boundary vertices and paired with the
-  // facet of the same key in one pass over an open-addressing table of
-  // 2^k >= 4 D records entries, marked by a stamp so that it is never
-  // cleared.  2D: the facet (p, u) is keyed by u, the same from both sides.
+  // facet of the same key in one pass over an open-addressing table (at least
+  // twice as many entries as the D facets a record registers, a power of
+  // two), marked by a stamp so that it is never cleared.  2D: the facet (p, u) is keyed by u, the same from both sides.
   // 3D: the facet (p, a, b) is keyed by (a, b) in the order that puts the
   // tetrahedron's own remaining vertex on the positive side of the oriented
   // facet; the tetrahedron across it sees the facet reversed, (b, a) (HXT's
@@ -269,22 +272,27 @@ class Restar {
         }
         const std::uint32_t enc = Mesh<D>::encode(ids_[r], f);
         std::size_t h = static_cast<std::size_t>((std::min(own, partner) * 0x9E3779B97F4A7C15ull) >> shift_);
+        Entry* found = nullptr;  // the partner's entry
         bool own_taken = false;
         for (; table_[h].stamp == stamp_; h = (h + 1) & mask) {
-          Entry& e = table_[h];
-          if (e.key == partner) {
-            if (e.value == kPaired) goto not_a_manifold;
-            m.link(enc, e.value);
-            e.value = kPaired;
-            --waiting;
-            goto next_facet;
+          if (table_[h].key == partner) {
+            found = &table_[h];
+            break;
           }
-          own_taken |= e.key == own;
+          own_taken |= table_[h].key == own;
         }
-        if (own_taken) goto not_a_manifold;
+        if (found && found->value != kPaired) {
+          m.link(enc, found->value);
+          found->value = kPaired;
+          --waiting;
+          continue;
+        }
+        if (found || own_taken) {
+          error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
+          return false;
+        }
         table_[h] = {own, enc, stamp_};
         ++waiting;
-      next_facet:;
       }
     }
     if (waiting != 0) {
@@ -292,9 +300,6 @@ class Restar {
       return false;
     }
     return true;
-  not_a_manifold:
-    error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
-    return false;
   }
 
   struct Entry {
