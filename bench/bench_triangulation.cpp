@@ -12,6 +12,8 @@
 //                                 [--order brio|hilbert|random|input] [--cgal 0|1] [--stats 0|1]
 // --cgal 0 skips CGAL (for profiling dlab alone, e.g. under callgrind); --stats 1
 // prints dlab's algorithm and predicate counters (calls per predicate and stage).
+// Exit status: 2 for a bad option (checked before any timing, the names by a
+// run on the first 8 points), 1 if a timed dlab run failed, else 0.
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -19,6 +21,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -140,20 +143,66 @@ int main(int argc, char** argv) {
   int repeat = 1;
   std::string order = "brio";
   bool with_cgal = true, stats = false;
+  // A whole number in [lo, hi], or 0 after an error message (exit 2).
+  auto count = [](const std::string& key, const std::string& value, unsigned long long lo,
+                  unsigned long long hi) -> unsigned long long {
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(value.c_str(), &end, 10);
+    if (value.empty() || value[0] == '-' || *end != '\0' || v < lo || v > hi) {
+      std::fprintf(stderr, "%s needs a whole number from %llu to %llu, not '%s'\n", key.c_str(), lo, hi,
+                   value.c_str());
+      return 0;
+    }
+    return v;
+  };
+  if (argc % 2 == 0) {
+    std::fprintf(stderr, "option %s has no value\n", argv[argc - 1]);
+    return 2;
+  }
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--dim") dim = std::atoi(value.c_str());
-    else if (key == "--n") n = std::strtoull(value.c_str(), nullptr, 10);
-    else if (key == "--set") set = value;
-    else if (key == "--algo") algo = value;
-    else if (key == "--kernels") kernels = value;
-    else if (key == "--repeat") repeat = std::atoi(value.c_str());
-    else if (key == "--order") order = value;
-    else if (key == "--cgal") with_cgal = value != "0";
-    else if (key == "--stats") stats = value != "0";
-    else { std::fprintf(stderr, "unknown option %s\n", key.c_str()); return 2; }
+    if (key == "--dim") {
+      if ((dim = static_cast<int>(count(key, value, 2, 3))) == 0) return 2;
+    } else if (key == "--n") {
+      if ((n = count(key, value, 1, 1ull << 32)) == 0) return 2;
+    } else if (key == "--repeat") {
+      if ((repeat = static_cast<int>(count(key, value, 1, 1000))) == 0) return 2;
+    } else if (key == "--set") {
+      set = value;
+    } else if (key == "--algo") {
+      algo = value;
+    } else if (key == "--kernels") {
+      kernels = value;
+    } else if (key == "--order") {
+      order = value;
+    } else if (key == "--cgal") {
+      with_cgal = value != "0";
+    } else if (key == "--stats") {
+      stats = value != "0";
+    } else {
+      std::fprintf(stderr, "unknown option %s\n", key.c_str());
+      return 2;
+    }
   }
-  const dlab::PointSet ps = dlab::bench::make_points(set, dim, n);
+  dlab::PointSet ps;
+  try {  // a bad set, algorithm, kernel or order: a message and exit 2, before any timing
+    ps = dlab::bench::make_points(set, dim, n);
+    dlab::PointSet few{ps.dimension, {}, {}};
+    if (dim == 2)
+      few.p2.assign(ps.p2.begin(), ps.p2.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(n, 8)));
+    else
+      few.p3.assign(ps.p3.begin(), ps.p3.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(n, 8)));
+    for (const std::string& kernel : split_commas(kernels)) {
+      dlab::RunOptions opt;
+      opt.algorithm = algo;
+      opt.kernel = kernel;
+      opt.order = order;
+      dlab::run(few, opt);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
   std::printf("# %dD %s, %zu points, %s; best of %d\n", dim, set.c_str(), ps.size(), algo.c_str(),
               repeat);
   std::printf("%-22s %10s %10s %12s %12s %10s %10s\n", "run", "seconds", "ratio", "bytes/point",
@@ -175,6 +224,7 @@ int main(int argc, char** argv) {
                 cgal.bytes / double(ps.size()), cgal.simplices, cgal.cpu, 1.0);
   else
     cgal.cpu = 1;
+  bool failed = false;
   for (const std::string& kernel : split_commas(kernels)) {
     dlab::RunOptions opt;
     opt.algorithm = algo;
@@ -184,6 +234,7 @@ int main(int argc, char** argv) {
     std::printf("%-22s %10.3f %10.2f %12.0f %12.0f %10.3f %10.2f%s\n", ("dlab-" + kernel).c_str(),
                 m.seconds, m.seconds / cgal.seconds, m.bytes / double(ps.size()), m.simplices, m.cpu,
                 m.cpu / cgal.cpu, m.ok ? "" : "  (failed)");
+    failed |= !m.ok;
   }
-  return 0;
+  return failed ? 1 : 0;
 }
