@@ -3,9 +3,9 @@
 # machine: R rounds, the two binaries in alternating order (A B, B A, ...), so
 # that a drift of the machine's speed falls on both alike.  Each run is the
 # bench's own best of its --repeat; the script prints, per binary, every
-# round's dlab seconds, their minimum and median, and the minimum and median of
-# the ratio to CGAL when the bench timed CGAL in the same run (--cgal 1, the
-# bench's default).
+# round's dlab seconds (the first dlab row: the first of --kernels), their
+# minimum and median, and the minimum and median of the ratio to CGAL when the
+# bench timed CGAL in the same run (--cgal 1, the bench's default).
 #
 #   bench/ab_compare.sh [-r ROUNDS] BENCH_A BENCH_B [bench options...]
 #   e.g. bench/ab_compare.sh -r 6 /tmp/base/dlab_bench_triangulation \
@@ -37,9 +37,11 @@ trap 'rm -rf "$work"' EXIT
 # One run of BIN: appends "seconds ratio" of its dlab row to FILE (ratio "-"
 # when the bench did not time CGAL).
 measure() {
-  local bin=$1 file=$2 out
+  local bin=$1 file=$2 out rc=0
   shift 2
-  out=$("$bin" "$@" 2>&1) || { echo "$0: $bin failed:" >&2; echo "$out" >&2; exit 1; }
+  out=$("$bin" "$@" 2>&1) || rc=$?
+  # The bench's status passes on: 2 for a bad option, 1 for a failed run.
+  if [ "$rc" -ne 0 ]; then echo "$0: $bin exited with $rc:" >&2; echo "$out" >&2; exit "$rc"; fi
   local cgal dl
   cgal=$(echo "$out" | awk '$1 ~ /^cgal/ {print $2; exit}')
   dl=$(echo "$out" | awk '$1 ~ /^dlab/ {print $2; exit}')
@@ -59,14 +61,19 @@ for ((r = 1; r <= rounds; r++)); do
 done
 [ -t 2 ] && printf '\n' >&2
 
+# "LABEL min X median Y" of column COLUMN of FILE.
+min_median() {
+  local label=$1 column=$2 file=$3
+  cut -d' ' -f"$column" "$file" | sort -g |
+    awk -v label="$label" '{s[NR] = $1}
+      END {printf "  %s min %.3f median %.3f\n", label, s[1], NR % 2 ? s[(NR + 1) / 2] : (s[NR / 2] + s[NR / 2 + 1]) / 2}'
+}
 summary() {
   local name=$1 bin=$2 file=$3
   echo "$name $bin"
   echo "  seconds: $(cut -d' ' -f1 "$file" | tr '\n' ' ')"
-  sort -g -k1,1 "$file" | awk '{s[NR] = $1} END {printf "  seconds min %.3f median %.3f\n", s[1], (NR % 2 ? s[(NR + 1) / 2] : (s[NR / 2] + s[NR / 2 + 1]) / 2)}'
-  if [ "$(cut -d' ' -f2 "$file" | head -1)" != - ]; then
-    sort -g -k2,2 "$file" | awk '{s[NR] = $2} END {printf "  dlab / CGAL min %.3f median %.3f\n", s[1], (NR % 2 ? s[(NR + 1) / 2] : (s[NR / 2] + s[NR / 2 + 1]) / 2)}'
-  fi
+  min_median seconds 1 "$file"
+  if [ "$(cut -d' ' -f2 "$file" | head -1)" != - ]; then min_median "dlab / CGAL" 2 "$file"; fi
 }
 echo "# $rounds rounds, alternating order; bench options: $*"
 summary A "$a" "$work/A"

@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
   std::string order = "brio";
   bool with_cgal = true, stats = false;
   // A whole number in [lo, hi], or 0 after an error message (exit 2).
-  auto count = [](const std::string& key, const std::string& value, unsigned long long lo,
+  auto whole_number = [](const std::string& key, const std::string& value, unsigned long long lo,
                   unsigned long long hi) -> unsigned long long {
     char* end = nullptr;
     const unsigned long long v = std::strtoull(value.c_str(), &end, 10);
@@ -162,11 +162,11 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--dim") {
-      if ((dim = static_cast<int>(count(key, value, 2, 3))) == 0) return 2;
+      if ((dim = static_cast<int>(whole_number(key, value, 2, 3))) == 0) return 2;
     } else if (key == "--n") {
-      if ((n = count(key, value, 1, 1ull << 32)) == 0) return 2;
+      if ((n = whole_number(key, value, 1, 1ull << 32)) == 0) return 2;
     } else if (key == "--repeat") {
-      if ((repeat = static_cast<int>(count(key, value, 1, 1000))) == 0) return 2;
+      if ((repeat = static_cast<int>(whole_number(key, value, 1, 1000))) == 0) return 2;
     } else if (key == "--set") {
       set = value;
     } else if (key == "--algo") {
