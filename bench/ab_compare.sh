@@ -71,7 +71,7 @@ min_median() {
 summary() {
   local name=$1 bin=$2 file=$3
   echo "$name $bin"
-  echo "  seconds: $(cut -d' ' -f1 "$file" | tr '\n' ' ')"
+  echo "  seconds: $(cut -d' ' -f1 "$file" | paste -sd' ')"
   min_median seconds 1 "$file"
   if [ "$(cut -d' ' -f2 "$file" | head -1)" != - ]; then min_median "dlab / CGAL" 2 "$file"; fi
 }
