@@ -184,6 +184,13 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  auto options = [&](const std::string& kernel) {
+    dlab::RunOptions opt;
+    opt.algorithm = algo;
+    opt.kernel = kernel;
+    opt.order = order;
+    return opt;
+  };
   dlab::PointSet ps;
   try {  // a bad set, algorithm, kernel or order: a message and exit 2, before any timing
     ps = dlab::bench::make_points(set, dim, n);
@@ -192,13 +199,7 @@ int main(int argc, char** argv) {
       few.p2.assign(ps.p2.begin(), ps.p2.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(n, 8)));
     else
       few.p3.assign(ps.p3.begin(), ps.p3.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(n, 8)));
-    for (const std::string& kernel : split_commas(kernels)) {
-      dlab::RunOptions opt;
-      opt.algorithm = algo;
-      opt.kernel = kernel;
-      opt.order = order;
-      dlab::run(few, opt);
-    }
+    for (const std::string& kernel : split_commas(kernels)) dlab::run(few, options(kernel));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
@@ -226,10 +227,7 @@ int main(int argc, char** argv) {
     cgal.cpu = 1;
   bool failed = false;
   for (const std::string& kernel : split_commas(kernels)) {
-    dlab::RunOptions opt;
-    opt.algorithm = algo;
-    opt.kernel = kernel;
-    opt.order = order;
+    const dlab::RunOptions opt = options(kernel);
     const Measure m = best([&] { return dlab_run(ps, opt, stats); });
     std::printf("%-22s %10.3f %10.2f %12.0f %12.0f %10.3f %10.2f%s\n", ("dlab-" + kernel).c_str(),
                 m.seconds, m.seconds / cgal.seconds, m.bytes / double(ps.size()), m.simplices, m.cpu,
