@@ -53,7 +53,9 @@
 //     pruning ball is a sphere of the pencil through f whose open-side part
 //     contains the best candidate's sphere's (ball_of), its centre and radius
 //     ENCLOSED by interval arithmetic (algorithms/interval.hpp) from a proved
-//     upper bound of its pencil parameter (algorithms/pencil_parameter.hpp),
+//     upper bound of its pencil parameter (algorithms/pencil_parameter.hpp)
+//     and, in 3D, a point within a proved distance of the pencil's axis
+//     (algorithms/pencil_axis.hpp),
 //     so a skipped box never meets the ball: the tree never decides the
 //     winner. The ball is recomputed once per leaf that improved the best
 //     (once for all the first leaves), not per improvement: the old one
@@ -84,6 +86,7 @@
 #include "algorithms/interval.hpp"
 #include "algorithms/kd_tree.hpp"
 #include "algorithms/oriented.hpp"
+#include "algorithms/pencil_axis.hpp"
 #include "algorithms/pencil_parameter.hpp"
 #include "algorithms/tanemura_start.hpp"
 #include "algorithms/triangulation_result.hpp"
@@ -332,10 +335,12 @@ class Tanemura {
   double nrm_norm_ = -1;             // an upper bound of |nrm_| (outer_norm; -1: not yet)
   bool pencil_ready_ = false;        // nn_, fcen_, fr2_, vc_ computed for this facet
   Iv nn_{};                          // |nrm_|^2
-  std::array<Iv, D> fcen_{};         // centre C of the facet's circumcircle (enclosure)
+  std::array<Iv, D> fcen_{};         // the pencil's base X0 (make_pencil; enclosure)
   std::array<std::array<Iv, D>, D> bq_{};  // scaled base_ vertices (bq_[0] = f0_)
-  std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - C (enclosures)
-  Iv fr2_{};                         // its squared radius (enclosure)
+  std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - X0 (enclosures)
+  Iv fr2_{};                         // |base_[0] - X0|^2 (enclosure)
+  Iv gn_{};                          // (base_[0] - X0).nrm_ (enclosure; axis_off_plane_ only)
+  bool axis_off_plane_ = false;      // X0 is not C (pencil_axis.hpp)
   std::array<double, D> target_{};   // the facet's centroid, then the ball's centre (scaled, rounded): visit order only
   // box_may_be_outer_fast: per axis, whether the box's upper end maximises
   // nrm_i (x_i - f0_i), and f0_i's end to subtract; outer_mixed_: an
@@ -366,35 +371,59 @@ class Tanemura {
 
 template <class K, int D>
 void Tanemura<K, D>::make_pencil() {
-  // Enclosures of the centre C = q0 + c of f's circumcircle (the smallest
-  // sphere of the pencil: algorithms/circumball.hpp), of R^2 = |c|^2 and of
-  // each vertex minus C.
+  // Enclosures of the pencil's base X0 = q0 + c, a point of its axis, of
+  // |v - X0|^2 for its vertices v, of (v - X0).n and of each vertex minus X0.
+  // Exact kernels in 3D, where the vertices' scaled coordinates are exact: X0
+  // is a point within a proved distance of the axis (algorithms/pencil_axis.hpp,
+  // plain doubles); (v - X0).n is then not zero. Else X0 is f's circumcentre C
+  // (algorithms/circumball.hpp, intervals), in f's plane. Inexact kernels keep
+  // the circumcentre: their answers can depend on the pruning (see ball_of).
   pencil_ready_ = true;
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
-  const Circumball<D> cb = circumball<D>(bq_, nrm_, nn_);
-  const std::array<Iv, D>& c = cb.offset;
+  std::array<Iv, D> c;
+  axis_off_plane_ = false;
+  if constexpr (D == 3 && K::exact) {
+    bool exact = true;
+    std::array<std::array<double, 3>, 3> q;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) q[j][i] = bq_[j][i].lo, exact &= bq_[j][i].lo == bq_[j][i].hi;
+    if (exact)
+      if (const std::optional<AxisPoint> a = pencil_axis_point(q, nrm_, nn_)) {
+        axis_off_plane_ = true;
+        for (int i = 0; i < 3; ++i) c[i] = Iv{Iv::lower_rel(a->y[i] - a->d), Iv::upper_rel(a->y[i] + a->d)};
+      }
+  }
+  if (!axis_off_plane_) {
+    const Circumball<D> cb = circumball<D>(bq_, nrm_, nn_);
+    c = cb.offset;
+    fr2_ = cb.r2;
+  }
   for (int i = 0; i < D; ++i) fcen_[i] = f0_[i] + c[i];
-  fr2_ = cb.r2;
   for (int j = 0; j < D; ++j)
     for (int i = 0; i < D; ++i)
       vc_[j][i] = j == 0 ? Iv{-c[i].hi, -c[i].lo} : bq_[j][i] - fcen_[i];
+  if (axis_off_plane_) {
+    fr2_ = gn_ = Iv{0, 0};
+    for (int i = 0; i < D; ++i) fr2_ = fr2_ + sq(vc_[0][i]), gn_ = gn_ + vc_[0][i] * nrm_[i];
+  }
 }
 
 template <class K, int D>
 typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
-  // The spheres through f form a pencil: centre C + t n (C = f0 + fc, the
-  // centre of f's circumcircle), squared radius R^2 + t^2 |n|^2 (n = nrm_ is
-  // orthogonal to the facet). The one through c has
-  //   t_c = (|c - C|^2 - R^2) / (2 n.(c - f0)),
+  // The spheres through f form a pencil: centre X0 + t n (X0 = fcen_, a
+  // point of the axis through the centre of f's circumcircle: make_pencil;
+  // n = nrm_ is orthogonal to the facet), squared radius |v - X0 - t n|^2 for
+  // any vertex v. With R = |v - X0| the one through c has
+  //   t_c = (|c - X0|^2 - R^2) / (2 n.(c - f0)),
   // and a point p on the open side is inside S_t iff t exceeds t_p; so for any
   // T >= t_c the open-side part of S_T contains that of S_{t_c}, which is all
   // that a prune needs (the box tests keep the other side out). T is the
-  // upper end of an enclosure of t_c, a double, so the centre is C + T n with
-  // enclosed roundings only. Both terms are evaluated from the facet vertex v
-  // nearest to c, with e = c - v (exact identities for the true values, as
-  // |v - C| = R and n.(v - f0) = 0):
-  //   |c - C|^2 - R^2 = |e|^2 + 2 e.(v - C),   n.(c - f0) = n.e.
+  // upper end of an enclosure of t_c, a double, so the centre is X0 + T n
+  // with enclosed roundings only. Both terms are evaluated from the facet
+  // vertex v nearest to c, with e = c - v (exact identities for the true
+  // values, as |v - X0| = R and n.(v - f0) = 0):
+  //   |c - X0|^2 - R^2 = |e|^2 + 2 e.(v - X0),   n.(c - f0) = n.e.
   // From f0 instead, when c is a near-duplicate of another vertex, both
   // cancel to below their rounding errors and t is unbounded or far too big.
   Ball b;
@@ -438,7 +467,10 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
     b.centre[i] = fcen_[i] + T * nrm_[i];
     if (!b.centre[i].bounded()) return b;
   }
-  const Iv r2 = fr2_ + sq(T) * nn_;
+  // |v - X0 - T n|^2 = |v - X0|^2 - 2 T (v - X0).n + T^2 |n|^2, the middle
+  // term zero for X0 in f's plane.
+  Iv r2 = fr2_ + sq(T) * nn_;
+  if (axis_off_plane_) r2 = r2 - (T + T) * gn_;
   if (!r2.bounded()) return b;
   b.r2 = r2.hi;
   b.r2_prune = prune_r2(r2.hi);
@@ -449,7 +481,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
     b.reach_hi[i] = (b.centre[i] + r).hi;
   }
   if (r2.hi > 0x1p20 * fr2_.hi) {
-    // v - centre = (v - C) - T n, with vc_[0] = v - C.
+    // v - centre = (v - X0) - T n, with vc_[0] = v - X0.
     Iv w2{0, 0};
     for (int i = 0; i < D; ++i) {
       b.w[i] = (vc_[0][i] - T * nrm_[i]) * Iv::exact(2);
