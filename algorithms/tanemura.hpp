@@ -375,7 +375,7 @@ void Tanemura<K, D>::make_pencil() {
   // |v - X0|^2 for its vertices v, of (v - X0).n and of each vertex minus X0.
   // Exact kernels in 3D, where the vertices' scaled coordinates are exact: X0
   // is a point within a proved distance of the axis (algorithms/pencil_axis.hpp,
-  // plain doubles); (v - X0).n is then not zero. Else X0 is f's circumcentre C
+  // plain doubles); (v - X0).n is then small, not zero. Else X0 is f's circumcentre C
   // (algorithms/circumball.hpp, intervals), in f's plane. Inexact kernels keep
   // the circumcentre: their answers can depend on the pruning (see ball_of).
   pencil_ready_ = true;
