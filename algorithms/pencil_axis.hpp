@@ -32,8 +32,9 @@
 //     the evaluation adds at most γ4 (Σ|y_i||û_i| + Σ û_i^2 / 2);
 //   * an underflowing product, square or halving adds at most 2^-1075 each
 //     (sums of subnormals are exact, Hauser 1996), seven in all;
-// hence, with P = Σ|y_i||û_i| and S = Σ û_i^2 (u' + γ4 < 5.0157u = 0x1.41p-51,
-// u' + u'^2/2 + γ4/2 < 3.0118u = 0x1.81p-52):
+// hence, with P = Σ|y_i||û_i| and S = Σ û_i^2 (u' + γ4 < 5.0001u, below
+// 0x1.41p-51 = 5.0156u; u' + u'^2/2 + γ4/2 < 3.0001u, below 0x1.81p-52 =
+// 3.0078u):
 //   |r1 - r̂1| <= 0x1.41p-51 P + 0x1.81p-52 S + 2^-1072   =: e1.
 // |u| <= (1 + u') |û| (each component), and |n| >= sqrt(nn.lo) for the
 // caller's enclosure nn of |n|^2 (from an enclosure of n itself).
