@@ -54,8 +54,10 @@
 //     contains the best candidate's sphere's (ball_of), its centre and radius
 //     ENCLOSED by interval arithmetic (algorithms/interval.hpp) from a proved
 //     upper bound of its pencil parameter (algorithms/pencil_parameter.hpp)
-//     and, in 3D, a point within a proved distance of the pencil's axis
-//     (algorithms/pencil_axis.hpp),
+//     and, in 3D with exact kernels, from plain doubles with proved bounds:
+//     the facet's normal (algorithms/facet_normal.hpp), a point within a
+//     proved distance of the pencil's axis (algorithms/pencil_axis.hpp) and
+//     the ball itself (algorithms/pencil_ball.hpp),
 //     so a skipped box never meets the ball: the tree never decides the
 //     winner. The ball is recomputed once per leaf that improved the best
 //     (once for all the first leaves), not per improvement: the old one
@@ -80,6 +82,7 @@
 #include "algorithms/box_ball.hpp"
 #include "algorithms/circumball.hpp"
 #include "algorithms/exact_flats.hpp"
+#include "algorithms/facet_normal.hpp"
 #include "algorithms/front.hpp"
 #include "algorithms/huge_pages.hpp"
 #include "algorithms/initial_simplex.hpp"
@@ -87,6 +90,7 @@
 #include "algorithms/kd_tree.hpp"
 #include "algorithms/oriented.hpp"
 #include "algorithms/pencil_axis.hpp"
+#include "algorithms/pencil_ball.hpp"
 #include "algorithms/pencil_parameter.hpp"
 #include "algorithms/tanemura_start.hpp"
 #include "algorithms/triangulation_result.hpp"
@@ -241,7 +245,7 @@ class Tanemura {
   // flatten: the interval operations inlined (half of the search's cost was
   // their calls on uniform 3D input).
   [[gnu::flatten]] Ball ball_of(std::uint32_t c);
-  [[gnu::flatten]] void make_pencil();  // nn_, fcen_, fr2_, vc_ (once per search)
+  [[gnu::flatten]] void make_pencil();  // nn_, fcen_, vc_, and fr2_ or pencil_base_ (once per search)
   [[gnu::noinline]] bool box_may_be_outer(const std::array<double, D>& lo, const std::array<double, D>& hi) const;
   // The same answer, cheaper: the corner of each axis from the normal's sign
   // (set_outer_corners, once per search); box_may_be_outer decides any prune.
@@ -333,14 +337,16 @@ class Tanemura {
   std::array<Iv, D> f0_{};           // scaled base_[0]
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
   double nrm_norm_ = -1;             // an upper bound of |nrm_| (outer_norm; -1: not yet)
-  bool pencil_ready_ = false;        // nn_, fcen_, fr2_, vc_ computed for this facet
+  bool pencil_ready_ = false;        // make_pencil ran for this facet
   Iv nn_{};                          // |nrm_|^2
   std::array<Iv, D> fcen_{};         // the pencil's base X0 (make_pencil; enclosure)
   std::array<std::array<Iv, D>, D> bq_{};  // scaled base_ vertices (bq_[0] = f0_)
+  bool bq_exact_ = false;                  // every bq_ enclosure is a point
   std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - X0 (enclosures)
-  Iv fr2_{};                         // |base_[0] - X0|^2 (enclosure)
-  Iv gn_{};                          // (base_[0] - X0).nrm_ (enclosure; axis_off_plane_ only)
-  bool axis_off_plane_ = false;      // X0 is not C (pencil_axis.hpp)
+  Iv fr2_{};                         // |base_[0] - X0|^2 (enclosure; X0 = C only)
+  double base_r2_ = 0;               // about |base_[0] - X0|^2 (the scale of Ball::huge)
+  bool axis_off_plane_ = false;      // X0 is not C (pencil_axis.hpp); the balls from pencil_base_
+  PencilBase pencil_base_{};         // axis_off_plane_ only (pencil_ball.hpp)
   std::array<double, D> target_{};   // the facet's centroid, then the ball's centre (scaled, rounded): visit order only
   // box_may_be_outer_fast: per axis, whether the box's upper end maximises
   // nrm_i (x_i - f0_i), and f0_i's end to subtract; outer_mixed_: an
@@ -371,42 +377,41 @@ class Tanemura {
 
 template <class K, int D>
 void Tanemura<K, D>::make_pencil() {
-  // Enclosures of the pencil's base X0 = q0 + c, a point of its axis, of
-  // |v - X0|^2 for its vertices v, of (v - X0).n and of each vertex minus X0.
-  // Exact kernels in 3D, where the vertices' scaled coordinates are exact: X0
-  // is a point within a proved distance of the axis (algorithms/pencil_axis.hpp,
-  // plain doubles); (v - X0).n is then small, not zero. Else X0 is f's circumcentre C
-  // (algorithms/circumball.hpp, intervals), in f's plane. Inexact kernels keep
-  // the circumcentre: their answers can depend on the pruning (see ball_of).
+  // Enclosures of the pencil's base X0 = q0 + c, a point of its axis, and of
+  // each vertex minus X0. Exact kernels in 3D, where the vertices' scaled
+  // coordinates are exact: X0 is a point within a proved distance of the
+  // axis (algorithms/pencil_axis.hpp, plain doubles), and the balls come
+  // from plain doubles too (pencil_base_: algorithms/pencil_ball.hpp). Else
+  // X0 is f's circumcentre C (algorithms/circumball.hpp, intervals), in f's
+  // plane, with |v - X0|^2 (fr2_). Inexact kernels keep the circumcentre:
+  // their answers can depend on the pruning (see ball_of).
   pencil_ready_ = true;
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
   std::array<Iv, D> c;
   axis_off_plane_ = false;
   if constexpr (D == 3 && K::exact) {
-    bool exact = true;
     std::array<std::array<double, 3>, 3> q;
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) q[j][i] = bq_[j][i].lo, exact &= bq_[j][i].lo == bq_[j][i].hi;
-    if (exact)
+      for (int i = 0; i < 3; ++i) q[j][i] = bq_[j][i].lo;
+    if (bq_exact_)
       if (const std::optional<AxisPoint> a = pencil_axis_point(q, nrm_, nn_)) {
         axis_off_plane_ = true;
         for (int i = 0; i < 3; ++i) c[i] = Iv{Iv::lower_rel(a->y[i] - a->d), Iv::upper_rel(a->y[i] + a->d)};
+        pencil_base_ = pencil_base(q[0], a->y, a->d, nrm_);
+        base_r2_ = (a->y[0] * a->y[0] + a->y[1] * a->y[1]) + a->y[2] * a->y[2];
       }
   }
   if (!axis_off_plane_) {
     const Circumball<D> cb = circumball<D>(bq_, nrm_, nn_);
     c = cb.offset;
     fr2_ = cb.r2;
+    base_r2_ = fr2_.hi;
   }
   for (int i = 0; i < D; ++i) fcen_[i] = f0_[i] + c[i];
   for (int j = 0; j < D; ++j)
     for (int i = 0; i < D; ++i)
       vc_[j][i] = j == 0 ? Iv{-c[i].hi, -c[i].lo} : bq_[j][i] - fcen_[i];
-  if (axis_off_plane_) {
-    fr2_ = gn_ = Iv{0, 0};
-    for (int i = 0; i < D; ++i) fr2_ = fr2_ + sq(vc_[0][i]), gn_ = gn_ + vc_[0][i] * nrm_[i];
-  }
 }
 
 template <class K, int D>
@@ -463,15 +468,23 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
     if (!t.bounded()) return b;
     T = Iv::exact(t.hi);
   }
-  for (int i = 0; i < D; ++i) {
-    b.centre[i] = fcen_[i] + T * nrm_[i];
-    if (!b.centre[i].bounded()) return b;
+  Iv r2;
+  if (axis_off_plane_) {
+    // Centre and radius in plain doubles (algorithms/pencil_ball.hpp).
+    const std::optional<PencilBall> s = pencil_ball(pencil_base_, T.hi);
+    if (!s) return b;
+    for (int i = 0; i < D; ++i)
+      b.centre[i] = {Iv::lower_rel(s->centre[i] - s->delta[i]), Iv::upper_rel(s->centre[i] + s->delta[i])};
+    r2 = Iv{0, s->r2};
+  } else {
+    for (int i = 0; i < D; ++i) {
+      b.centre[i] = fcen_[i] + T * nrm_[i];
+      if (!b.centre[i].bounded()) return b;
+    }
+    // |v - C - T n|^2 = |v - C|^2 + T^2 |n|^2 (C in f's plane).
+    r2 = fr2_ + sq(T) * nn_;
+    if (!r2.bounded()) return b;
   }
-  // |v - X0 - T n|^2 = |v - X0|^2 - 2 T (v - X0).n + T^2 |n|^2, the middle
-  // term zero for X0 in f's plane.
-  Iv r2 = fr2_ + sq(T) * nn_;
-  if (axis_off_plane_) r2 = r2 - (T + T) * gn_;
-  if (!r2.bounded()) return b;
   b.r2 = r2.hi;
   b.r2_prune = prune_r2(r2.hi);
   b.bounded = true;
@@ -480,7 +493,7 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
     b.reach_lo[i] = (b.centre[i] - r).lo;
     b.reach_hi[i] = (b.centre[i] + r).hi;
   }
-  if (r2.hi > 0x1p20 * fr2_.hi) {
+  if (r2.hi > 0x1p20 * base_r2_) {
     // v - centre = (v - X0) - T n, with vc_[0] = v - X0.
     Iv w2{0, 0};
     for (int i = 0; i < D; ++i) {
@@ -892,9 +905,27 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
     for (int i = 0; i < D; ++i) q[j][i] = tree_.scaled_iv(pts_[base_[j]][i], i);
   f0_ = q[0];
   bq_ = q;
+  bq_exact_ = true;
+  for (int j = 0; j < D; ++j)
+    for (int i = 0; i < D; ++i) bq_exact_ &= q[j][i].lo == q[j][i].hi;
+  // Exact kernels in 3D with exact scaled vertices: the normal from plain
+  // doubles (algorithms/facet_normal.hpp) where that is not exact anyway.
+  // Inexact kernels keep the interval products: their answers can depend on
+  // the pruning (see ball_of).
+  std::optional<std::array<Iv, 3>> fast_normal;
+  if constexpr (D == 3 && K::exact) {
+    if (bq_exact_) {
+      std::array<std::array<double, 3>, 3> qd;
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) qd[j][i] = q[j][i].lo;
+      fast_normal = facet_normal(qd);
+    }
+  }
   if constexpr (D == 2) {
     const Iv ux = tight_sub(q[1][0], q[0][0]), uy = tight_sub(q[1][1], q[0][1]);
     nrm_ = {tight_sub(Iv{0, 0}, uy), ux};
+  } else if (fast_normal) {
+    nrm_ = *fast_normal;
   } else {
     std::array<Iv, 3> u, v;
     for (int i = 0; i < 3; ++i) u[i] = tight_sub(q[1][i], q[0][i]), v[i] = tight_sub(q[2][i], q[0][i]);
