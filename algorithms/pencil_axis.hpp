@@ -1,4 +1,5 @@
-// A point near the axis of a triangle's circumcircle in 3D, in plain doubles
+// A point near the axis of a triangle's circumcircle in 3D (and of an edge's
+// pencil of circles in 2D: edge_axis_point, at the end), in plain doubles
 // with a bound proved once, for Tanemura's pencil of spheres through a facet
 // (algorithms/tanemura.hpp, make_pencil). The interval circumcentre
 // (algorithms/circumball.hpp) cost about 1 800 instructions a search, 13 % of
@@ -57,8 +58,9 @@
 
 namespace dlab {
 
+template <int D>
 struct AxisPoint {
-  std::array<double, 3> y;  // q0 + y lies within d of the axis
+  std::array<double, D> y;  // q0 + y lies within d of the axis
   double d;
 };
 
@@ -93,7 +95,7 @@ inline std::optional<double> pencil_axis_distance(const std::array<std::array<do
 
 // A point y near the axis (the circumcentre's formula of circumball.hpp
 // evaluated in doubles, from the upper ends of n) and its distance bound.
-inline std::optional<AxisPoint> pencil_axis_point(const std::array<std::array<double, 3>, 3>& q,
+inline std::optional<AxisPoint<3>> pencil_axis_point(const std::array<std::array<double, 3>, 3>& q,
                                                   const std::array<Iv, 3>& n, Iv nn) {
   std::array<double, 3> u, v, m;
   for (int i = 0; i < 3; ++i) u[i] = q[1][i] - q[0][i], v[i] = q[2][i] - q[0][i], m[i] = n[i].hi;
@@ -103,7 +105,7 @@ inline std::optional<AxisPoint> pencil_axis_point(const std::array<std::array<do
   const std::array<double, 3> vm = {v[1] * m[2] - v[2] * m[1], v[2] * m[0] - v[0] * m[2], v[0] * m[1] - v[1] * m[0]};
   const std::array<double, 3> mu = {m[1] * u[2] - m[2] * u[1], m[2] * u[0] - m[0] * u[2], m[0] * u[1] - m[1] * u[0]};
   const double inv = 0.5 / mm;
-  AxisPoint a;
+  AxisPoint<3> a;
   double ymax = 0;
   for (int i = 0; i < 3; ++i) {
     a.y[i] = (uu * vm[i] + vv * mu[i]) * inv;
@@ -112,6 +114,27 @@ inline std::optional<AxisPoint> pencil_axis_point(const std::array<std::array<do
   const std::optional<double> d = pencil_axis_distance(q, a.y, nn);
   if (!d || !(ymax < HUGE_VAL && *d <= 0x1p-20 * ymax)) return std::nullopt;
   a.d = *d;
+  return a;
+}
+
+// 2D: the pencil of circles through an edge q0 q1 (exact doubles) has its
+// centres on the perpendicular bisector, through X = q0 + u/2 (u = q1 - q0).
+// With û = fl(q1 - q0), y = û/2 errs by |u_i - û_i|/2 <= u'|û_i|/2 per axis
+// (and the halving by 2^-1075 where it underflows), so
+//   |X - (q0 + y)| <= 2^-54 (1 + 2u)(|û0| + |û1|) + 2^-1074,
+// below d = fl(fl(|û0| + |û1|) 2^-52) + 2^-1073 (four times the main term:
+// plenty for the sum's rounding and an underflow of the product; the
+// distance itself is 2^-1000 of the edge or less). nullopt on overflow or NaN.
+inline std::optional<AxisPoint<2>> edge_axis_point(const std::array<std::array<double, 2>, 2>& q) {
+  AxisPoint<2> a;
+  double s = 0;
+  for (int i = 0; i < 2; ++i) {
+    const double u = q[1][i] - q[0][i];
+    a.y[i] = u / 2;
+    s += std::fabs(u);
+  }
+  a.d = s * 0x1p-52 + 0x1p-1073;
+  if (!(a.d < HUGE_VAL)) return std::nullopt;  // NaN too
   return a;
 }
 

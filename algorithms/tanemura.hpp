@@ -54,8 +54,8 @@
 //     contains the best candidate's sphere's (ball_of), its centre and radius
 //     ENCLOSED by interval arithmetic (algorithms/interval.hpp) from a proved
 //     upper bound of its pencil parameter (algorithms/pencil_parameter.hpp)
-//     and, in 3D with exact kernels, from plain doubles with proved bounds:
-//     the facet's normal (algorithms/facet_normal.hpp), a point within a
+//     and, with exact kernels, from plain doubles with proved bounds: the
+//     facet's normal (algorithms/facet_normal.hpp, 3D), a point within a
 //     proved distance of the pencil's axis (algorithms/pencil_axis.hpp) and
 //     the ball itself (algorithms/pencil_ball.hpp),
 //     so a skipped box never meets the ball: the tree never decides the
@@ -154,6 +154,14 @@ class Tanemura {
     std::array<Iv, D> x;
     for (int i = 0; i < D; ++i) x[i] = tree_.scaled_iv(pts_[id][i], i);
     return x;
+  }
+
+  // The search's facet's scaled vertices, bq_'s lower ends (exact where bq_exact_).
+  std::array<Point<D>, D> base_points() const {
+    std::array<Point<D>, D> q;
+    for (int j = 0; j < D; ++j)
+      for (int i = 0; i < D; ++i) q[j][i] = bq_[j][i].lo;
+    return q;
   }
 
   static double l1(const Point<D>& x, const Point<D>& y) {
@@ -345,8 +353,8 @@ class Tanemura {
   std::array<std::array<Iv, D>, D> vc_{};  // base_[j] - X0 (enclosures)
   Iv fr2_{};                         // |base_[0] - X0|^2 (enclosure; X0 = C only)
   double base_r2_ = 0;               // about |base_[0] - X0|^2 (the scale of Ball::huge)
-  bool axis_off_plane_ = false;      // X0 is not C (pencil_axis.hpp); the balls from pencil_base_
-  PencilBase pencil_base_{};         // axis_off_plane_ only (pencil_ball.hpp)
+  bool pencil_in_doubles_ = false;   // X0 from pencil_axis.hpp, the balls from pencil_base_
+  PencilBase<D> pencil_base_{};      // pencil_in_doubles_ only (pencil_ball.hpp)
   std::array<double, D> target_{};   // the facet's centroid, then the ball's centre (scaled, rounded): visit order only
   // box_may_be_outer_fast: per axis, whether the box's upper end maximises
   // nrm_i (x_i - f0_i), and f0_i's end to subtract; outer_mixed_: an
@@ -378,10 +386,11 @@ class Tanemura {
 template <class K, int D>
 void Tanemura<K, D>::make_pencil() {
   // Enclosures of the pencil's base X0 = q0 + c, a point of its axis, and of
-  // each vertex minus X0. Exact kernels in 3D, where the vertices' scaled
+  // each vertex minus X0. Exact kernels, where the vertices' scaled
   // coordinates are exact: X0 is a point within a proved distance of the
-  // axis (algorithms/pencil_axis.hpp, plain doubles), and the balls come
-  // from plain doubles too (pencil_base_: algorithms/pencil_ball.hpp). Else
+  // axis (algorithms/pencil_axis.hpp, plain doubles; in 2D near the edge's
+  // midpoint), and the balls come from plain doubles too (pencil_base_:
+  // algorithms/pencil_ball.hpp). Else
   // X0 is f's circumcentre C (algorithms/circumball.hpp, intervals), in f's
   // plane, with |v - X0|^2 (fr2_). Inexact kernels keep the circumcentre:
   // their answers can depend on the pruning (see ball_of).
@@ -389,20 +398,27 @@ void Tanemura<K, D>::make_pencil() {
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
   std::array<Iv, D> c;
-  axis_off_plane_ = false;
-  if constexpr (D == 3 && K::exact) {
-    std::array<std::array<double, 3>, 3> q;
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) q[j][i] = bq_[j][i].lo;
-    if (bq_exact_)
-      if (const std::optional<AxisPoint> a = pencil_axis_point(q, nrm_, nn_)) {
-        axis_off_plane_ = true;
-        for (int i = 0; i < 3; ++i) c[i] = Iv{Iv::lower_rel(a->y[i] - a->d), Iv::upper_rel(a->y[i] + a->d)};
-        pencil_base_ = pencil_base(q[0], a->y, a->d, nrm_);
-        base_r2_ = (a->y[0] * a->y[0] + a->y[1] * a->y[1]) + a->y[2] * a->y[2];
+  pencil_in_doubles_ = false;
+  if constexpr (K::exact) {
+    if (bq_exact_) {
+      const std::array<Point<D>, D> q = base_points();
+      std::optional<AxisPoint<D>> a;
+      if constexpr (D == 3)
+        a = pencil_axis_point(q, nrm_, nn_);
+      else
+        a = edge_axis_point(q);
+      if (a) {
+        pencil_in_doubles_ = true;
+        base_r2_ = 0;
+        for (int i = 0; i < D; ++i) {
+          c[i] = Iv{Iv::lower_rel(a->y[i] - a->d), Iv::upper_rel(a->y[i] + a->d)};
+          base_r2_ += a->y[i] * a->y[i];
+        }
+        pencil_base_ = pencil_base<D>(q[0], a->y, a->d, nrm_);
       }
+    }
   }
-  if (!axis_off_plane_) {
+  if (!pencil_in_doubles_) {
     const Circumball<D> cb = circumball<D>(bq_, nrm_, nn_);
     c = cb.offset;
     fr2_ = cb.r2;
@@ -469,9 +485,9 @@ typename Tanemura<K, D>::Ball Tanemura<K, D>::ball_of(std::uint32_t c) {
     T = Iv::exact(t.hi);
   }
   Iv r2;
-  if (axis_off_plane_) {
+  if (pencil_in_doubles_) {
     // Centre and radius in plain doubles (algorithms/pencil_ball.hpp).
-    const std::optional<PencilBall> s = pencil_ball(pencil_base_, T.hi);
+    const std::optional<PencilBall<D>> s = pencil_ball(pencil_base_, T.hi);
     if (!s) return b;
     for (int i = 0; i < D; ++i)
       b.centre[i] = {Iv::lower_rel(s->centre[i] - s->delta[i]), Iv::upper_rel(s->centre[i] + s->delta[i])};
@@ -913,14 +929,8 @@ std::uint32_t Tanemura<K, D>::search(const Facet& f, std::uint32_t apex) {
   // Inexact kernels keep the interval products: their answers can depend on
   // the pruning (see ball_of).
   std::optional<std::array<Iv, 3>> fast_normal;
-  if constexpr (D == 3 && K::exact) {
-    if (bq_exact_) {
-      std::array<std::array<double, 3>, 3> qd;
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) qd[j][i] = q[j][i].lo;
-      fast_normal = facet_normal(qd);
-    }
-  }
+  if constexpr (D == 3 && K::exact)
+    if (bq_exact_) fast_normal = facet_normal(base_points());
   if constexpr (D == 2) {
     const Iv ux = tight_sub(q[1][0], q[0][0]), uy = tight_sub(q[1][1], q[0][1]);
     nrm_ = {tight_sub(Iv{0, 0}, uy), ux};

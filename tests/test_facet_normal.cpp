@@ -10,7 +10,6 @@
 //   * an exact zero stays an exact zero (axis-parallel facets);
 //   * no answer for short operands (grid points: the exact interval
 //     products are a point there), out-of-range differences and NaN.
-#include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -19,13 +18,12 @@
 #include <random>
 
 #include "algorithms/facet_normal.hpp"
+#include "tests/rational_vectors.hpp"
 
 using namespace dlab;
+using namespace dlab::rational_vectors;
 
 namespace {
-
-using Q = boost::multiprecision::mpq_rational;
-using Tri = std::array<std::array<double, 3>, 3>;
 
 struct Exact {
   std::array<Q, 3> n;     // (q1 - q0) x (q2 - q0)

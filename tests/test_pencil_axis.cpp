@@ -10,9 +10,11 @@
 //     near-duplicate vertices, y from pencil_axis_point and y moved off it;
 //   * no answer for a degenerate triangle, NaN, overflow or a sliver whose
 //     bound exceeds 2^-20 of y.
+// 2D (edge_axis_point): q0 + y within d of an edge's perpendicular bisector,
+// with coordinates of mixed exponents on every scale; no answer on NaN or
+// overflow.
 // Mutations these tests catch are listed in papers/triangulation_costs.md
 // ("Session 34").
-#include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -21,19 +23,12 @@
 #include <random>
 
 #include "algorithms/pencil_axis.hpp"
+#include "tests/rational_vectors.hpp"
 
 using namespace dlab;
+using namespace dlab::rational_vectors;
 
 namespace {
-
-using Q = boost::multiprecision::mpq_rational;
-using Tri = std::array<std::array<double, 3>, 3>;
-using QV = std::array<Q, 3>;
-
-QV cross(const QV& a, const QV& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Q dot(const QV& a, const QV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // The exact squared distance from q0 + y to the axis (the part of y - C in
 // the triangle's plane, from the residuals: the header's w).
@@ -52,22 +47,16 @@ Q distance2(const Tri& q, const std::array<double, 3>& y) {
   return dot(w, w);
 }
 
-// The normal's enclosures as Tanemura computes them (algorithms/tanemura.hpp,
-// search) and the enclosure of its squared norm.
+// The normal's enclosures as Tanemura computes them and the enclosure of its
+// squared norm.
 struct Normal {
   std::array<Iv, 3> n;
   Iv nn{0, 0};
 };
 Normal normal_of(const Tri& q) {
-  std::array<Iv, 3> u, v;
-  for (int i = 0; i < 3; ++i) {
-    u[i] = tight_sub(Iv::exact(q[1][i]), Iv::exact(q[0][i]));
-    v[i] = tight_sub(Iv::exact(q[2][i]), Iv::exact(q[0][i]));
-  }
-  const auto c = [&](int j, int k) { return tight_sub(tight_mul(u[j], v[k]), tight_mul(u[k], v[j])); };
   Normal r;
-  r.n = {c(1, 2), c(2, 0), c(0, 1)};
-  for (int i = 0; i < 3; ++i) r.nn = r.nn + sq(r.n[i]);
+  r.n = search_normal(q);
+  r.nn = norm2(r.n);
   return r;
 }
 
@@ -130,7 +119,7 @@ TEST_CASE("pencil_axis: the bound holds under rounding, on every scale, for sliv
       }
       ++total;
       const Normal nr = normal_of(q);
-      const std::optional<AxisPoint> a = pencil_axis_point(q, nr.n, nr.nn);
+      const std::optional<AxisPoint<3>> a = pencil_axis_point(q, nr.n, nr.nn);
       // In range (scaled coordinates are about 1 in Tanemura), every
       // triangle but the slivers answers; out of it (products overflow or
       // |n|^2 < 2^-900) none does.
@@ -175,7 +164,7 @@ TEST_CASE("pencil_axis: no answer where the bound does not apply") {
     const std::array<Iv, 3> tilted = {Iv::exact(0.5), Iv::exact(0), Iv::exact(1)};
     REQUIRE_FALSE(pencil_axis_point(q, tilted, Iv::exact(1)));
     const Normal nr = normal_of(q);
-    const std::optional<AxisPoint> a = pencil_axis_point(q, nr.n, nr.nn);
+    const std::optional<AxisPoint<3>> a = pencil_axis_point(q, nr.n, nr.nn);
     REQUIRE(a);
     REQUIRE(a->y == std::array<double, 3>{0.5, 0.5, 0});
     REQUIRE(a->d < 0x1p-48);
@@ -187,4 +176,40 @@ TEST_CASE("pencil_axis: no answer where the bound does not apply") {
       REQUIRE(pencil_axis_point(q, n, Iv::exact(1)).has_value() == answers);
     }
   }
+}
+
+TEST_CASE("pencil_axis: 2D, q0 + y lies within d of the edge's perpendicular bisector") {
+  // The bisector's nearest point to q0 + y is X = q0 + u/2 moved along n =
+  // (-u1, u0); the distance is |(y - u/2) . u| / |u|. Coordinates of mixed
+  // exponents (so that q1 - q0 rounds), on scales 2^-1070 to 2^1000.
+  std::mt19937_64 rng(352);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  double worst = 0;  // the largest distance / d seen
+  for (int scale = -1070; scale <= 1000; scale += 30) {
+    for (int trial = 0; trial < 200; ++trial) {
+      std::array<std::array<double, 2>, 2> q;
+      for (auto& p : q)
+        for (double& x : p) x = std::ldexp(unit(rng), std::min(1020, scale + int(rng() % 9) - 4));
+      const std::optional<AxisPoint<2>> a = edge_axis_point(q);
+      REQUIRE(a);
+      Q along{0}, uu{0};
+      for (int i = 0; i < 2; ++i) {
+        const Q u = Q(q[1][i]) - Q(q[0][i]);
+        along += (Q(a->y[i]) - u / 2) * u;
+        uu += u * u;
+      }
+      if (uu == 0) continue;
+      const Q dist2 = along * along / uu;
+      REQUIRE(dist2 <= Q(a->d) * Q(a->d));
+      if (a->d > 0x1p-1000) worst = std::max(worst, std::sqrt(static_cast<double>(dist2 / (Q(a->d) * Q(a->d)))));
+    }
+  }
+  INFO("worst distance / d " << worst);
+  // The header's main term, 2^-54 (|û0| + |û1|), is a quarter of d: the
+  // largest distance seen must come near it (d at an eighth fails).
+  REQUIRE(worst > 0.2);
+  const std::array<std::array<double, 2>, 2> nan_edge = {{{0, 0}, {std::nan(""), 1}}};
+  REQUIRE_FALSE(edge_axis_point(nan_edge));
+  const std::array<std::array<double, 2>, 2> huge_edge = {{{-0x1p1023, 0}, {0x1p1023, 0}}};
+  REQUIRE_FALSE(edge_axis_point(huge_edge));
 }

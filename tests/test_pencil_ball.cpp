@@ -8,10 +8,10 @@
 //   * the rounding terms alone: triangles whose normal and axis point are
 //     exact (d and rho about zero), so that only the roundings of T m and
 //     z + T m separate the computed centre from the true one;
+//   * 2D: random edges, y from edge_axis_point;
 //   * no answer on overflow or NaN.
 // Mutations these tests catch are listed in papers/triangulation_costs.md
 // ("Session 35").
-#include <boost/multiprecision/gmp.hpp>
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -20,22 +20,14 @@
 #include <optional>
 #include <random>
 
-#include "algorithms/facet_normal.hpp"
 #include "algorithms/pencil_axis.hpp"
 #include "algorithms/pencil_ball.hpp"
+#include "tests/rational_vectors.hpp"
 
 using namespace dlab;
+using namespace dlab::rational_vectors;
 
 namespace {
-
-using Q = boost::multiprecision::mpq_rational;
-using Tri = std::array<std::array<double, 3>, 3>;
-using QV = std::array<Q, 3>;
-
-QV cross(const QV& a, const QV& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Q dot(const QV& a, const QV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // The exact pencil of q: n, and X, the point of the axis nearest q0 + y.
 struct ExactPencil {
@@ -57,8 +49,8 @@ ExactPencil exact_pencil(const Tri& q, const std::array<double, 3>& y) {
 }
 
 // Checks the ball of T against the exact sphere; false if there is none.
-bool check_ball(const Tri& q, const ExactPencil& ex, const PencilBase& base, double T) {
-  const std::optional<PencilBall> b = pencil_ball(base, T);
+bool check_ball(const Tri& q, const ExactPencil& ex, const PencilBase<3>& base, double T) {
+  const std::optional<PencilBall<3>> b = pencil_ball(base, T);
   if (!b) return false;
   Q r2{0};
   for (int i = 0; i < 3; ++i) {
@@ -69,18 +61,6 @@ bool check_ball(const Tri& q, const ExactPencil& ex, const PencilBase& base, dou
   REQUIRE(r2 <= Q(b->r2));
   return true;
 }
-
-std::array<Iv, 3> normal_of(const Tri& q) {  // facet_normal, else the exact products
-  if (const std::optional<std::array<Iv, 3>> n = facet_normal(q)) return *n;
-  std::array<Iv, 3> u, v;
-  for (int i = 0; i < 3; ++i) {
-    u[i] = tight_sub(Iv::exact(q[1][i]), Iv::exact(q[0][i]));
-    v[i] = tight_sub(Iv::exact(q[2][i]), Iv::exact(q[0][i]));
-  }
-  const auto c = [&](int j, int k) { return tight_sub(tight_mul(u[j], v[k]), tight_mul(u[k], v[j])); };
-  return {c(1, 2), c(2, 0), c(0, 1)};
-}
-Iv norm2(const std::array<Iv, 3>& n) { return sq(n[0]) + sq(n[1]) + sq(n[2]); }
 
 }  // namespace
 
@@ -93,8 +73,8 @@ TEST_CASE("pencil_ball: the exact sphere lies within the bounds, on every scale 
       Tri q;
       for (auto& p : q)
         for (double& x : p) x = std::ldexp(unit(rng), scale + int(rng() % 5) - 2);
-      const std::array<Iv, 3> n = normal_of(q);
-      const std::optional<AxisPoint> a = pencil_axis_point(q, n, norm2(n));
+      const std::array<Iv, 3> n = search_normal(q);
+      const std::optional<AxisPoint<3>> a = pencil_axis_point(q, n, norm2(n));
       if (!a) continue;
       // y on its own, and moved off the axis (so that d is what bounds X).
       std::array<double, 3> y = a->y;
@@ -104,7 +84,7 @@ TEST_CASE("pencil_ball: the exact sphere lies within the bounds, on every scale 
         const std::optional<double> d = moved ? pencil_axis_distance(q, y, norm2(n)) : std::optional{a->d};
         REQUIRE(d);
         const ExactPencil ex = exact_pencil(q, y);
-        const PencilBase base = pencil_base(q[0], y, *d, n);
+        const PencilBase<3> base = pencil_base<3>(q[0], y, *d, n);
         // T from tiny to 2^40 of the scale over |n| (n has the scale squared).
         for (int k = 0; k < 6; ++k) {
           const double T = std::ldexp(unit(rng), -scale + int(rng() % 90) - 50);
@@ -116,6 +96,48 @@ TEST_CASE("pencil_ball: the exact sphere lies within the bounds, on every scale 
     }
   }
   REQUIRE(balls > 6000);
+}
+
+TEST_CASE("pencil_ball: 2D, the exact circle lies within the bounds") {
+  // The pencil of circles through an edge: centres X + T n on the
+  // perpendicular bisector, X its point nearest q0 + y (edge_axis_point),
+  // n = (-u1, u0) enclosed as Tanemura's search does (interval differences).
+  std::mt19937_64 rng(353);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int balls = 0;
+  for (int scale = -300; scale <= 300; scale += 50) {
+    for (int trial = 0; trial < 200; ++trial) {
+      std::array<std::array<double, 2>, 2> q;
+      for (auto& p : q)
+        for (double& x : p) x = std::ldexp(unit(rng), scale + int(rng() % 5) - 2);
+      const std::optional<AxisPoint<2>> a = edge_axis_point(q);
+      REQUIRE(a);
+      const Iv ux = tight_sub(Iv::exact(q[1][0]), Iv::exact(q[0][0]));
+      const Iv uy = tight_sub(Iv::exact(q[1][1]), Iv::exact(q[0][1]));
+      const std::array<Iv, 2> n = {tight_sub(Iv{0, 0}, uy), ux};
+      const std::array<Q, 2> u = {Q(q[1][0]) - Q(q[0][0]), Q(q[1][1]) - Q(q[0][1])};
+      const std::array<Q, 2> nq = {-u[1], u[0]};
+      const Q nn = nq[0] * nq[0] + nq[1] * nq[1];
+      if (nn == 0) continue;
+      // X = q0 + u/2 + s n with s = (y - u/2).n / |n|^2.
+      const Q s = ((Q(a->y[0]) - u[0] / 2) * nq[0] + (Q(a->y[1]) - u[1] / 2) * nq[1]) / nn;
+      const PencilBase<2> base = pencil_base<2>(q[0], a->y, a->d, n);
+      for (int k = 0; k < 6; ++k) {
+        const double T = k == 0 ? 0.0 : std::ldexp(unit(rng), -scale + int(rng() % 90) - 50);
+        const std::optional<PencilBall<2>> b = pencil_ball(base, T);
+        REQUIRE(b);
+        Q r2{0};
+        for (int i = 0; i < 2; ++i) {
+          const Q c = Q(q[0][i]) + u[i] / 2 + (s + Q(T)) * nq[i];
+          REQUIRE(abs(c - Q(b->centre[i])) <= Q(b->delta[i]));
+          r2 += (Q(q[0][i]) - c) * (Q(q[0][i]) - c);
+        }
+        REQUIRE(r2 <= Q(b->r2));
+        ++balls;
+      }
+    }
+  }
+  REQUIRE(balls > 10000);
 }
 
 TEST_CASE("pencil_ball: the rounding terms alone bound the error of an exact pencil") {
@@ -134,7 +156,7 @@ TEST_CASE("pencil_ball: the rounding terms alone bound the error of an exact pen
     const std::array<double, 3> y = {s, t, 0};
     const ExactPencil ex = exact_pencil(q, y);
     for (int i = 0; i < 3; ++i) REQUIRE(ex.x[i] == Q(q0[i]) + Q(y[i]));  // q0 + y is on the axis: d = 0
-    const PencilBase base = pencil_base(q0, y, 0.0, n);
+    const PencilBase<3> base = pencil_base<3>(q0, y, 0.0, n);
     REQUIRE(check_ball(q, ex, base, unit(rng) * std::ldexp(1.0, int(rng() % 20) - 10)));
   }
 }
@@ -142,7 +164,7 @@ TEST_CASE("pencil_ball: the rounding terms alone bound the error of an exact pen
 TEST_CASE("pencil_ball: no answer on overflow or NaN") {
   const Tri q = {{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}};
   const std::array<Iv, 3> n = {Iv::exact(0), Iv::exact(0), Iv::exact(4)};
-  const PencilBase base = pencil_base(q[0], {1, 1, 0}, 0x1p-60, n);
+  const PencilBase<3> base = pencil_base<3>(q[0], {1, 1, 0}, 0x1p-60, n);
   REQUIRE(pencil_ball(base, 0x1p500));
   REQUIRE_FALSE(pencil_ball(base, 0x1p1020));
   REQUIRE_FALSE(pencil_ball(base, std::numeric_limits<double>::quiet_NaN()));
