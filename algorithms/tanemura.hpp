@@ -390,10 +390,10 @@ void Tanemura<K, D>::make_pencil() {
   // coordinates are exact: X0 is a point within a proved distance of the
   // axis (algorithms/pencil_axis.hpp, plain doubles; in 2D near the edge's
   // midpoint), and the balls come from plain doubles too (pencil_base_:
-  // algorithms/pencil_ball.hpp). Else
-  // X0 is f's circumcentre C (algorithms/circumball.hpp, intervals), in f's
-  // plane, with |v - X0|^2 (fr2_). Inexact kernels keep the circumcentre:
-  // their answers can depend on the pruning (see ball_of).
+  // algorithms/pencil_ball.hpp). Else X0 is f's circumcentre C
+  // (algorithms/circumball.hpp, intervals), in f's plane, with |v - X0|^2
+  // (fr2_). Inexact kernels keep the circumcentre: their answers can depend
+  // on the pruning (see ball_of).
   pencil_ready_ = true;
   nn_ = Iv{0, 0};
   for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
