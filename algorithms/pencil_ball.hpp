@@ -51,7 +51,7 @@ namespace dlab {
 template <int D>
 struct PencilBase {
   std::array<double, D> q0, y, m;
-  double near;                 // d + 2^-1075 (the product's underflow)
+  double near;                 // d + 2^-1074 (and the product's underflow, 2^-1075)
   std::array<double, D> tilt;  // (1 + u') ρ_i: bounds |n_i - m_i|
 };
 
