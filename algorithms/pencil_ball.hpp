@@ -28,12 +28,15 @@
 // and, as |ĉ_i - (q0_i + w_i)| <= u'|ĉ_i|,
 //   |c_i - ĉ_i| <= ε_i + u'|ĉ_i|  =: δ_i.
 // The radius is bounded relative to q0, so its error scales with the ball,
-// not with the coordinates (an absolute centre's rounding, 2^-53 of the
-// coordinates, let 13 % more points through on the near-degenerate 3D set).
-// ε, δ and r2 are computed in doubles: sums and products of positive terms
-// over at most a dozen roundings (with the per-search terms), so a relative
-// slack of 2^-44 and an absolute one of 2^-1068 (underflows) cover them, as
-// in algorithms/pencil_parameter.hpp.
+// not with the coordinates.
+// ε and δ are computed in doubles: sums and products of positive terms over
+// at most a dozen roundings (with the per-search terms), so a relative slack
+// of 2^-44 and an absolute one of 2^-1068 (underflows) cover them, as in
+// algorithms/pencil_parameter.hpp. Each term of r2 meets at most five
+// roundings (|w_i| + ε_i, the square, two sums, the slack), so its slack is
+// 2^-48 > 5u: the pruning adds 2^-44 of r2 anyway (box_ball.hpp, prune_r2),
+// and a second 2^-44 here let 13 % more points through on the
+// near-degenerate 3D set, whose points lie within a few ulps of a sphere.
 //
 // No answer (nullopt) on an overflow or a NaN (T far beyond the scaled
 // coordinates' range): the caller then has no ball (no pruning).
@@ -91,7 +94,7 @@ std::optional<PencilBall<D>> pencil_ball(const PencilBase<D>& b, double T) {
     const double a = fabs(w) + eps;
     r2 += a * a;
   }
-  s.r2 = r2 * slack + tiny;
+  s.r2 = r2 * (1 + 0x1p-48) + tiny;
   if (!(s.r2 < HUGE_VAL)) return std::nullopt;  // NaN too; then every delta_i is finite
   return s;
 }
