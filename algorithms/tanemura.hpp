@@ -346,7 +346,7 @@ class Tanemura {
   std::array<Iv, D> nrm_{};          // outer normal (scaled), enclosure
   double nrm_norm_ = -1;             // an upper bound of |nrm_| (outer_norm; -1: not yet)
   bool pencil_ready_ = false;        // make_pencil ran for this facet
-  Iv nn_{};                          // |nrm_|^2
+  Iv nn_{};                          // |nrm_|^2 (make_pencil; not set for 2D balls in doubles)
   std::array<Iv, D> fcen_{};         // the pencil's base X0 (make_pencil; enclosure)
   std::array<std::array<Iv, D>, D> bq_{};  // scaled base_ vertices (bq_[0] = f0_)
   bool bq_exact_ = false;                  // every bq_ enclosure is a point
@@ -395,8 +395,16 @@ void Tanemura<K, D>::make_pencil() {
   // (fr2_). Inexact kernels keep the circumcentre: their answers can depend
   // on the pruning (see ball_of).
   pencil_ready_ = true;
-  nn_ = Iv{0, 0};
-  for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
+  // |n|^2: for the 3D axis point and the circumcentre (not the 2D balls in doubles).
+  bool have_nn = false;
+  const auto normal_norm2 = [&] {
+    if (!have_nn) {
+      nn_ = Iv{0, 0};
+      for (int i = 0; i < D; ++i) nn_ = nn_ + sq(nrm_[i]);
+      have_nn = true;
+    }
+    return nn_;
+  };
   std::array<Iv, D> c;
   pencil_in_doubles_ = false;
   if constexpr (K::exact) {
@@ -404,7 +412,7 @@ void Tanemura<K, D>::make_pencil() {
       const std::array<Point<D>, D> q = base_points();
       std::optional<AxisPoint<D>> a;
       if constexpr (D == 3)
-        a = pencil_axis_point(q, nrm_, nn_);
+        a = pencil_axis_point(q, nrm_, normal_norm2());
       else
         a = edge_axis_point(q);
       if (a) {
@@ -419,7 +427,7 @@ void Tanemura<K, D>::make_pencil() {
     }
   }
   if (!pencil_in_doubles_) {
-    const Circumball<D> cb = circumball<D>(bq_, nrm_, nn_);
+    const Circumball<D> cb = circumball<D>(bq_, nrm_, normal_norm2());
     c = cb.offset;
     fr2_ = cb.r2;
     base_r2_ = fr2_.hi;
