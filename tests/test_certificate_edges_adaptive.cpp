@@ -35,6 +35,7 @@
 #include "predicates/adaptive_kernel.hpp"
 #include "predicates/determinants.hpp"
 #include "predicates/mp_kernel.hpp"
+#include "tests/sanitized_build.hpp"
 
 using namespace dlab;
 
@@ -1032,7 +1033,8 @@ TEST_CASE("incircle and insphere stages A and B: exact around their bounds",
   for (bool insphere : {false, true}) {
     EdgeHits hits;
     int below = 0;
-    for (int e = -170; e <= 190; e += 3)
+    // Under ASan every fifth of these binades (tests/sanitized_build.hpp).
+    for (int e = -170; e <= 190; e += test::kSanitizedBuild ? 15 : 3)
       for (int i = 0; i < 3; ++i) {
         const double r = std::ldexp(1 + i / 3.0 + 0x1p-40 * e, e);
         for (int offset : {-1, 0, 1})
@@ -1165,7 +1167,7 @@ TEST_CASE("stage C of orient2d, incircle, insphere and stage B of orient2d: exac
           "their bounds", "[adaptive][edges]") {
   std::array<int, 3> below_c{};
   int below_b = 0;
-  for (int s = -150; s <= 150; s += 3)
+  for (int s = -150; s <= 150; s += test::kSanitizedBuild ? 15 : 3)  // as above
     for (double rho : {0.6, 0.9, 0.999, 1.001, 1.1}) {
       for (int k = 0; k < 3; ++k)
         EDGE_CHECK_CATCH(check_stage_c(k == 0 ? 2 : k == 1 ? 4 : 5, rho, s, (s & 1) != 0, below_c[k]));
