@@ -10,7 +10,7 @@
 //   * with exact differences (vertices within a factor two of each other),
 //     the narrower bound 0x1.01p-53 (|a| + |b| + |m0|) at its
 //     edge: on cancelling products (a = b up to a few ulps) the largest error
-//     seen exceeds 0.9 of the half-width (halved, it fails), and every width
+//     seen exceeds 0.95 of the half-width (halved, it fails), and every width
 //     stays below 2^-51 (|a| + |b| + |m0|) (doubled, or the first bound used,
 //     it fails); soundness where m0 rounds too (the |m0| term's absence is
 //     not caught: lower_rel's step, at least an ulp of m0, covers it); a
@@ -133,9 +133,9 @@ TEST_CASE("facet_normal: exact differences, the narrower bound at its edge") {
     REQUIRE(worst > 0.95);
   }
   SECTION("a small second product: m0 rounds as much as a") {
-    // Soundness only: the enclosure's outward step (lower_rel, upper_rel),
-    // at least an ulp of m0, also covers m0's own rounding, so the |m0|
-    // term's absence would not show here.
+    // Soundness near the bound; the |m0| term's absence would not show:
+    // the enclosure's outward step (lower_rel, upper_rel), at least an ulp
+    // of m0, also covers m0's own rounding.
     double worst = 0;
     for (int trial = 0; trial < 20000; ++trial) {
       // n2 = u0 v1 - u1 v0 with u1 v0 about 2^-k: m0 = a - b rounds.
