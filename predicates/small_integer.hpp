@@ -33,10 +33,9 @@
 // zero: the symbolic perturbation of predicates/perturbed.hpp (sos::walk,
 // Devillers & Teillaud 2011), on the same certificate. Relative to the query,
 // every point is an integer vector with coordinates in [-B, B]; its
-// lexicographic rank is that of the integer key ((x+B)(2B+1) + (y+B))(2B+1) +
-// (z+B) (subtracting the query preserves the order, and the key is exact), and
-// the orientations the walk asks are determinants of differences of such
-// vectors, at most 2B per entry: exact by the orient2d / orient3d budgets.
+// lexicographic rank is that of an exact integer key (subtracting the query
+// preserves the order), and the orientations the walk asks are, up to sign,
+// the determinant's own exact minors and their sum (detail::first_by_decreasing_key).
 //
 // Sign conventions are Shewchuk's (predicates/kernel.hpp); the determinants are
 // expanded as in predicates/adaptive_kernel.hpp (Shewchuk 1997, section 4).
@@ -207,58 +206,45 @@ struct SosAnswer {
   bool by_perturbation;  // the exact determinant was zero
 };
 
+// The key of an integer vector v in [-B, B]^D with W = 2B + 1, (v0 W + v1) W
+// + v2 (2D: v0 W + v1), is exact (at most B (W^2 + W + 1) < 2^30 in
+// magnitude) and increases with the lexicographic order: a larger first
+// coordinate adds at least W^2 (2D: W), the others take at most 2B W + 2B =
+// W^2 - 1 (2D: 2B = W - 1) away. B: ic_bound (2D), is_bound (3D).
+inline constexpr double ic_key_base = 2 * ic_bound + 1, is_key_base = 2 * is_bound + 1;
+static_assert(ic_bound * (ic_key_base + 1) <= 0x1p30 &&
+              is_bound * (is_key_base * is_key_base + is_key_base + 1) <= 0x1p30);
+inline double lex_key2(double x, double y) { return x * ic_key_base + y; }
+inline double lex_key3(double x, double y, double z) { return (x * is_key_base + y) * is_key_base + z; }
+
 namespace detail {
-// Visits i in 0..N-1 by decreasing key, the lower index first among equal keys
-// (sos::by_decreasing_rank's stable order), until f(i) is non-zero.
-template <int N, class F>
-Sign by_decreasing_key(const long (&key)[N], F&& f) {
-  bool used[N] = {};
-  for (int step = 0; step < N; ++step) {
-    int best = -1;
-    for (int i = 0; i < N; ++i)
-      if (!used[i] && (best < 0 || key[i] > key[best])) best = i;
-    used[best] = true;
-    const Sign s = f(best);
-    if (s != Sign::zero) return s;
-  }
-  return Sign::zero;
-}
-inline Sign orient2(const double* p, const double* q, const double* r) {
-  return sign_of((p[0] - r[0]) * (q[1] - r[1]) - (p[1] - r[1]) * (q[0] - r[0]));
-}
-inline Sign orient3(const double* p, const double* q, const double* r, const double* s) {
-  const double adx = p[0] - s[0], ady = p[1] - s[1], adz = p[2] - s[2];
-  const double bdx = q[0] - s[0], bdy = q[1] - s[1], bdz = q[2] - s[2];
-  const double cdx = r[0] - s[0], cdy = r[1] - s[1], cdz = r[2] - s[2];
-  return sign_of((adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy)) +
-                 cdz * (adx * bdy - bdx * ady));
-}
-// sos::walk<3> on the certified points (see the top of this file).
-[[gnu::noinline]] inline Sign insphere_walk(const Point3& a, const Point3& b, const Point3& c,
-                                            const Point3& d, const Point3& e) {
-  const double v[5][3] = {{a[0] - e[0], a[1] - e[1], a[2] - e[2]},
-                          {b[0] - e[0], b[1] - e[1], b[2] - e[2]},
-                          {c[0] - e[0], c[1] - e[1], c[2] - e[2]},
-                          {d[0] - e[0], d[1] - e[1], d[2] - e[2]},
-                          {0, 0, 0}};
-  constexpr long B = static_cast<long>(is_bound), W = 2 * B + 1;
-  long key[5];
-  for (int i = 0; i < 5; ++i)
-    key[i] = ((static_cast<long>(v[i][0]) + B) * W + (static_cast<long>(v[i][1]) + B)) * W +
-             (static_cast<long>(v[i][2]) + B);
-  // The query (4) contributes -orient(a, b, c, d); point i the orientation of
-  // (a, b, c, d) with i replaced by the query.
-  return by_decreasing_key<5>(key, [&](int i) {
-    if (i == 4) return -orient3(v[0], v[1], v[2], v[3]);
-    const double* t[4] = {v[0], v[1], v[2], v[3]};
-    t[i] = v[4];
-    return orient3(t[0], t[1], t[2], t[3]);
-  });
+// sos::walk on the certified points without an orientation of its own. With
+// the query q at the origin (every point is taken relative to it), the walk's
+// orientation with point i replaced by q is a minor that the determinant has
+// already computed exactly, up to sign; the query's own term is -orient of
+// the others, their minors' alternating sum (multilinearity: the rows a - d
+// expand into a and -d, and no minor has d twice):
+//   2D, orient2(p, q, r) = det[p - r; q - r]:
+//     0: det[b; c] = bc,  1: det[c; a] = ca,  2: det[a; b] = ab,
+//     3: -orient2(a, b, c) = -(ab + bc + ca);
+//   3D, orient3(p, q, r, s) = det[p - s; q - s; r - s]:
+//     0: -det[b; c; d] = -bcd,  1: det[c; d; a] = cda,  2: -det[d; a; b] = -dab,
+//     3: det[a; b; c] = abc,    4: -orient3(a, b, c, d) = -(abc - bcd + cda - dab).
+// The sums are exact: at most 6 B^2 (2D) and 24 B^3 (3D), below 2^53. The
+// walk takes the points by decreasing lexicographic rank, the lower index
+// first among equal ranks (sos::by_decreasing_rank), and answers the first
+// non-zero term: that is the non-zero term of the largest key, the lower
+// index on a tie (the keys: lex_key2, lex_key3).
+template <int N>
+Sign first_by_decreasing_key(const double (&key)[N], const double (&term)[N]) {
+  int best = -1;
+  for (int i = 0; i < N; ++i)
+    if (term[i] != 0 && (best < 0 || key[i] > key[best])) best = i;
+  return best < 0 ? Sign::zero : sign_of(term[best]);  // zero: a degenerate simplex
 }
 }  // namespace detail
-// The walk's orientations take differences of two vectors of [-B, B]^D.
-static_assert(2 * (2 * ic_bound) * (2 * ic_bound) <= two53);
-static_assert(6 * (2 * is_bound) * (2 * is_bound) * (2 * is_bound) <= two53);
+// The walk's terms (detail::first_by_decreasing_key) are exact.
+static_assert(6 * ic_bound * ic_bound <= two53 && 24 * is_bound * is_bound * is_bound <= two53);
 
 inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   if (!all_int<2, 4>({&a, &b, &c, &d})) return {false, Sign::zero, false};
@@ -275,19 +261,9 @@ inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c,
   const double ab = v[0][0] * v[1][1] - v[0][1] * v[1][0];
   const Sign exact = sign_of((alift * bc + blift * ca) + clift * ab);
   if (exact != Sign::zero) return {true, exact, false};
-  constexpr long B = static_cast<long>(ic_bound), W = 2 * B + 1;
-  long key[4];
-  for (int i = 0; i < 4; ++i)
-    key[i] = (static_cast<long>(v[i][0]) + B) * W + (static_cast<long>(v[i][1]) + B);
-  // sos::walk<2>: the query (3) contributes -orient(a, b, c); point i the
-  // orientation of (a, b, c) with i replaced by the query.
-  const Sign s = detail::by_decreasing_key<4>(key, [&](int i) {
-    if (i == 3) return -detail::orient2(v[0], v[1], v[2]);
-    const double* t[3] = {v[0], v[1], v[2]};
-    t[i] = v[3];
-    return detail::orient2(t[0], t[1], t[2]);
-  });
-  return {true, s, true};
+  const double key[4] = {lex_key2(v[0][0], v[0][1]), lex_key2(v[1][0], v[1][1]), lex_key2(v[2][0], v[2][1]), 0};
+  const double term[4] = {bc, ca, ab, -((ab + bc) + ca)};
+  return {true, detail::first_by_decreasing_key<4>(key, term), true};
 }
 
 inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
@@ -317,7 +293,10 @@ inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c,
   const double dlift = (dex * dex + dey * dey) + dez * dez;
   const Sign exact = sign_of((dlift * abc - clift * dab) + (blift * cda - alift * bcd));
   if (exact != Sign::zero) return {true, exact, false};
-  return {true, detail::insphere_walk(a, b, c, d, e), true};
+  const double key[5] = {lex_key3(aex, aey, aez), lex_key3(bex, bey, bez), lex_key3(cex, cey, cez),
+                         lex_key3(dex, dey, dez), 0};
+  const double term[5] = {-bcd, cda, -dab, abc, -((abc - bcd) + (cda - dab))};
+  return {true, detail::first_by_decreasing_key<5>(key, term), true};
 }
 
 }  // namespace dlab::small_integer

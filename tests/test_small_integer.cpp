@@ -14,11 +14,13 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "predicates/adaptive_kernel.hpp"
 #include "predicates/mp_kernel.hpp"
 #include "predicates/perturbed.hpp"
 #include "predicates/small_integer.hpp"
+#include "predicates/sos_walk.hpp"
 
 using namespace dlab;
 
@@ -201,6 +203,41 @@ TEST_CASE("small_integer: the symbolic walk equals perturbed<mp>, ties included"
   CHECK(small_integer::insphere_sos({512, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {0, 0, 0}).known);
   CHECK_FALSE(small_integer::incircle_sos({4097, 0}, {0, 1}, {1, 1}, {0, 0}).known);
   CHECK(small_integer::incircle_sos({4096, 0}, {0, 1}, {1, 1}, {0, 0}).known);
+}
+
+// The walk's keys (lex_key2, lex_key3) at the edges of their range [-B, B]^D:
+// exact, and in the lexicographic order (lex_less, plain comparisons), on every
+// pair of vectors with coordinates at the ends, next to them and near zero.
+TEST_CASE("small_integer: the walk's keys order [-B, B]^D lexicographically", "[small_integer]") {
+  const auto values = [](double b) { return std::array<double, 7>{-b, -b + 1, -1, 0, 1, b - 1, b}; };
+  const auto v2 = values(small_integer::ic_bound);
+  std::vector<Point2> p2;
+  for (double x : v2)
+    for (double y : v2) p2.push_back({x, y});
+  int pairs = 0;
+  for (const Point2& u : p2)
+    for (const Point2& v : p2) {
+      const double ku = small_integer::lex_key2(u[0], u[1]), kv = small_integer::lex_key2(v[0], v[1]);
+      REQUIRE(ku == std::trunc(ku));
+      REQUIRE((ku < kv) == lex_less<2>(u, v));
+      REQUIRE((ku == kv) == (u == v));
+      ++pairs;
+    }
+  const auto v3 = values(small_integer::is_bound);
+  std::vector<Point3> p3;
+  for (double x : v3)
+    for (double y : v3)
+      for (double z : v3) p3.push_back({x, y, z});
+  for (const Point3& u : p3)
+    for (const Point3& v : p3) {
+      const double ku = small_integer::lex_key3(u[0], u[1], u[2]);
+      const double kv = small_integer::lex_key3(v[0], v[1], v[2]);
+      REQUIRE(ku == std::trunc(ku));
+      REQUIRE((ku < kv) == lex_less<3>(u, v));
+      REQUIRE((ku == kv) == (u == v));
+      ++pairs;
+    }
+  CHECK(pairs == 49 * 49 + 343 * 343);
 }
 
 // Certificate (1) of predicates/small_integer.hpp, claim by claim, against
