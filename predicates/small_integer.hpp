@@ -266,7 +266,8 @@ inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c,
   return {true, detail::first_by_decreasing_key<4>(key, term), true};
 }
 
-inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+// Inline: its call made perturbed<AdaptiveKernel>::insphere_lattice save and restore five registers.
+[[gnu::always_inline]] inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                               const Point3& e) {
   if (!all_int<3, 5>({&a, &b, &c, &d, &e})) return {false, Sign::zero, false};
   const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
