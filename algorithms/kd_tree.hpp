@@ -138,6 +138,10 @@ class KdTree {
     return {Iv::down(v), Iv::up(v)};
   }
 
+  // scaled_iv's point where exact_enclosures() holds, for a point given to
+  // build(): there every enclosure is the one double (x - origin) * scale.
+  double scaled_exact(double x, int axis) const { return (x - origin_[axis]) * scale_; }
+
   // The translation and the scale of scaled_iv (for tests).
   double origin(int axis) const { return origin_[axis]; }
   double scale() const { return scale_; }

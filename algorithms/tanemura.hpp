@@ -599,10 +599,14 @@ bool Tanemura<K, D>::point_may_be_in_ball(const Point<D>& p) const {
   if (ball_.huge) [[unlikely]]
     if (point_outside_huge_ball(p)) return false;
   std::array<double, D> x;
-  for (int i = 0; i < D; ++i) {
-    const Iv v = tree_.scaled_iv(p[i], i);
-    if (v.lo != v.hi) return true;  // underflowed scaling: do not prune
-    x[i] = v.lo;
+  if (tree_.exact_enclosures()) [[likely]] {
+    for (int i = 0; i < D; ++i) x[i] = tree_.scaled_exact(p[i], i);
+  } else {
+    for (int i = 0; i < D; ++i) {
+      const Iv v = tree_.scaled_iv(p[i], i);
+      if (v.lo != v.hi) return true;  // underflowed scaling: do not prune
+      x[i] = v.lo;
+    }
   }
   return box_may_meet_ball(x, x, ball_);
 }
