@@ -149,6 +149,13 @@ class KdTree {
   static constexpr std::uint32_t root() { return 0; }
   const Node& node(std::uint32_t k) const { return nodes_[k]; }
   static bool is_leaf(const Node& n) { return n.right == kNoNode; }
+  // The axis an inner node splits: its box's widest (the first of equals).
+  static int split_axis(const Node& n) {
+    int axis = 0;
+    for (int i = 1; i < D; ++i)
+      if (n.hi[i] - n.lo[i] > n.hi[axis] - n.lo[axis]) axis = i;
+    return axis;
+  }
   std::uint32_t left(std::uint32_t k) const { return k + 1; }
   std::uint32_t sibling(std::uint32_t k) const {
     const std::uint32_t up = parent(k);
@@ -212,9 +219,7 @@ class KdTree {
       fit_frame(k);
       return k;
     }
-    int axis = 0;
-    for (int i = 1; i < D; ++i)
-      if (n.hi[i] - n.lo[i] > n.hi[axis] - n.lo[axis]) axis = i;
+    const int axis = split_axis(n);
     const std::uint32_t m = b + (e - b) / 2;
     // A total order (coordinate, then id): the tree is the same on every run.
     std::nth_element(slots_.begin() + b, slots_.begin() + m, slots_.begin() + e,

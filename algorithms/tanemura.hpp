@@ -293,6 +293,14 @@ class Tanemura {
   template <Walk W>
   void visit(const Facet& f, std::uint32_t k);
   double distance2_to_target(const typename KdTree<D>::Node& n) const;
+  // Whether the target lies beyond the middle of the gap between n's
+  // children a (left) and b along n's split axis: nearly the order by
+  // distance to the target, at a fraction of its cost (uniform 3D: 0.3 %
+  // more points examined, 5.6 % fewer instructions; session 37). Exact
+  // kernels only, as the inexact kernels' answers depend on the order, and
+  // not on flat nodes (a line's boxes are diagonal: 2D collinear examined
+  // 55 % more points).
+  bool nearer_right(const typename KdTree<D>::Node& n, std::uint32_t a, std::uint32_t b) const;
   bool ball_inside(const typename KdTree<D>::Node& n) const {  // ball_'s reach strictly inside n's box
     bool in = true;
     for (int i = 0; i < D; ++i) in &= n.lo[i] < ball_.reach_lo[i] && ball_.reach_hi[i] < n.hi[i];
@@ -693,6 +701,12 @@ double Tanemura<K, D>::distance2_to_target(const typename KdTree<D>::Node& n) co
 }
 
 template <class K, int D>
+bool Tanemura<K, D>::nearer_right(const typename KdTree<D>::Node& n, std::uint32_t a, std::uint32_t b) const {
+  const int axis = KdTree<D>::split_axis(n);
+  return target_[axis] - tree_.node(a).hi[axis] > tree_.node(b).lo[axis] - target_[axis];
+}
+
+template <class K, int D>
 template <typename Tanemura<K, D>::Walk W>
 void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   if constexpr (W != Walk::one_climb) {
@@ -758,7 +772,10 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
     return scan_leaf(f, n);
   }
   std::uint32_t a = tree_.left(k), b = n.right;
-  if (distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a))) std::swap(a, b);
+  const bool right_first = K::exact && !tree_.framed(k)
+                               ? nearer_right(n, a, b)
+                               : distance2_to_target(tree_.node(b)) < distance2_to_target(tree_.node(a));
+  if (right_first) std::swap(a, b);
   visit<W>(f, a);
   visit<W>(f, b);  // recursion depth: the tree's, about log2(n / kLeaf)
 }
