@@ -261,14 +261,15 @@ inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c,
   const double ab = v[0][0] * v[1][1] - v[0][1] * v[1][0];
   const Sign exact = sign_of((alift * bc + blift * ca) + clift * ab);
   if (exact != Sign::zero) return {true, exact, false};
-  const double key[4] = {lex_key2(v[0][0], v[0][1]), lex_key2(v[1][0], v[1][1]), lex_key2(v[2][0], v[2][1]), 0};
+  const double key[4] = {lex_key2(v[0][0], v[0][1]), lex_key2(v[1][0], v[1][1]),
+                         lex_key2(v[2][0], v[2][1]), 0};
   const double term[4] = {bc, ca, ab, -((ab + bc) + ca)};
   return {true, detail::first_by_decreasing_key<4>(key, term), true};
 }
 
 // Inline: its call made perturbed<AdaptiveKernel>::insphere_lattice save and restore five registers.
-[[gnu::always_inline]] inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                              const Point3& e) {
+[[gnu::always_inline]] inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c,
+                                                     const Point3& d, const Point3& e) {
   if (!all_int<3, 5>({&a, &b, &c, &d, &e})) return {false, Sign::zero, false};
   const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
   const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
