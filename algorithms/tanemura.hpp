@@ -291,7 +291,12 @@ class Tanemura {
   // only many_climbs pays for it.
   enum class Walk { first_leaves, one_climb, many_climbs };
   template <Walk W>
-  void visit(const Facet& f, std::uint32_t k);
+  [[gnu::always_inline]] inline void visit(const Facet& f, std::uint32_t k);
+  // visit's part after the ball test, out of line: the test inline at each
+  // call spares the nodes it prunes the call's register saves (uniform 3D
+  // 2*10^4: 1.3 % fewer instructions).
+  template <Walk W>
+  [[gnu::noinline]] void visit_rest(const Facet& f, std::uint32_t k);
   double distance2_to_target(const typename KdTree<D>::Node& n) const;
   // Whether the target lies beyond the middle of the gap between n's
   // children a (left) and b along n's split axis: nearly the order by
@@ -717,6 +722,13 @@ void Tanemura<K, D>::visit(const Facet& f, std::uint32_t k) {
   ++nodes_visited_;
   // The ball test first: it is cheaper and, during the climb, prunes most nodes.
   if (ball_valid_ && ball_.bounded && !box_may_meet_ball(n.lo, n.hi, ball_)) return;
+  visit_rest<W>(f, k);
+}
+
+template <class K, int D>
+template <typename Tanemura<K, D>::Walk W>
+void Tanemura<K, D>::visit_rest(const Facet& f, std::uint32_t k) {
+  const typename KdTree<D>::Node& n = tree_.node(k);
   // Flat oblique points (fans off a line or plane): their oriented box, in
   // the climbs (the first leaves are scanned anyway); the outer side there
   // only while there is no ball (a hull facet's climb).
