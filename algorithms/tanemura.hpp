@@ -301,7 +301,7 @@ class Tanemura {
   // Whether the target lies beyond the middle of the gap between n's
   // children a (left) and b along n's split axis: nearly the order by
   // distance to the target, at a fraction of its cost (uniform 3D: 0.3 %
-  // more points examined, 5.6 % fewer instructions; session 37). Exact
+  // more points examined, 5.1 % fewer instructions; session 37). Exact
   // kernels only, as the inexact kernels' answers depend on the order, and
   // not on flat nodes (a line's boxes are diagonal: 2D collinear examined
   // 55 % more points).
