@@ -214,7 +214,7 @@ class Mesh {
     d_.resize(d_.size() + n * S);  // unwritten: CacheAligned::construct
     const bool marks = !kMarkInBlock && has_marks_;
     if (marks) mark_.resize(mark_.size() + n);
-    for_ranges(first, slots(), [this, marks](std::uint32_t a, std::uint32_t b) {
+    for_ranges(first, slots(), [&](std::uint32_t a, std::uint32_t b) {
       std::fill(d_.begin() + std::size_t(a) * S, d_.begin() + std::size_t(b) * S, kNoNeighbour);
       for (std::uint32_t s = a; s < b; ++s) {
         d_[std::size_t(s) * S] = kDead;
