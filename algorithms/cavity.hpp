@@ -32,6 +32,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/mesh.hpp"
@@ -257,42 +258,70 @@ class Restar {
     }
     const std::size_t mask = table_.size() - 1;
     std::uint32_t waiting = 0;
+    // Registers facet `enc` of a new simplex under (own, partner) and links
+    // it to its partner if that waits; false: a facet of more than two new
+    // simplices. Always inline: g++ 12 left it out of line (5.2 % more).
+    auto register_facet = [&](std::uint32_t enc, std::uint64_t own,
+                              std::uint64_t partner) __attribute__((always_inline)) {
+      std::size_t h = static_cast<std::size_t>((std::min(own, partner) * 0x9E3779B97F4A7C15ull) >> shift_);
+      Entry* found = nullptr;  // the partner's entry
+      bool own_taken = false;
+      for (; table_[h].stamp == stamp_; h = (h + 1) & mask) {
+        if (table_[h].key == partner) {
+          found = &table_[h];
+          break;
+        }
+        own_taken |= table_[h].key == own;
+      }
+      if (found && found->value != kPaired) {
+        m.link(enc, found->value);
+        found->value = kPaired;
+        --waiting;
+        return true;
+      }
+      if (found || own_taken) return false;
+      table_[h] = {own, enc, stamp_};
+      ++waiting;
+      return true;
+    };
     for (std::size_t r = 0; r < records.size(); ++r) {
       const BoundaryRecord<D>& rec = records[r];
       const int slot = rec.slot;
-      for (int f = 0; f < V; ++f) {
-        if (f == slot) continue;
-        std::uint64_t own, partner;
-        if constexpr (D == 2) {
-          own = partner = rec.v[3 - f - slot];
-        } else {
-          const std::uint32_t a = rec.v[kEdge[slot][f][0]], b = rec.v[kEdge[slot][f][1]];
-          own = (std::uint64_t(a) << 32) | b;
-          partner = (std::uint64_t(b) << 32) | a;
-        }
-        const std::uint32_t enc = Mesh<D>::encode(ids_[r], f);
-        std::size_t h = static_cast<std::size_t>((std::min(own, partner) * 0x9E3779B97F4A7C15ull) >> shift_);
-        Entry* found = nullptr;  // the partner's entry
-        bool own_taken = false;
-        for (; table_[h].stamp == stamp_; h = (h + 1) & mask) {
-          if (table_[h].key == partner) {
-            found = &table_[h];
-            break;
+      bool ok = true;
+      if constexpr (D == 2) {
+        for (int f = 0; f < V; ++f)
+          if (f != slot) {
+            const std::uint32_t u = rec.v[3 - f - slot];
+            ok &= register_facet(Mesh<D>::encode(ids_[r], f), u, u);
           }
-          own_taken |= table_[h].key == own;
+      } else {
+        // The three facets through p, each with its slots from kEdge as
+        // constants (a switch on p's slot). Against a loop over the four
+        // facets that skipped p's: Bowyer-Watson on uniform 3D 10^5 points
+        // ran 4.4 % fewer instructions; a loop over the three, 2.2 % more.
+        const auto facets = [&]<int P>(std::integral_constant<int, P>) {
+          const auto one = [&]<int F>(std::integral_constant<int, F>) {
+            const std::uint32_t a = rec.v[kEdge[P][F][0]], b = rec.v[kEdge[P][F][1]];
+            return register_facet(Mesh<D>::encode(ids_[r], F), (std::uint64_t(a) << 32) | b,
+                                  (std::uint64_t(b) << 32) | a);
+          };
+          bool all = true;
+          if constexpr (P != 0) all &= one(std::integral_constant<int, 0>{});
+          if constexpr (P != 1) all &= one(std::integral_constant<int, 1>{});
+          if constexpr (P != 2) all &= one(std::integral_constant<int, 2>{});
+          if constexpr (P != 3) all &= one(std::integral_constant<int, 3>{});
+          return all;
+        };
+        switch (slot) {
+          case 0: ok = facets(std::integral_constant<int, 0>{}); break;
+          case 1: ok = facets(std::integral_constant<int, 1>{}); break;
+          case 2: ok = facets(std::integral_constant<int, 2>{}); break;
+          default: ok = facets(std::integral_constant<int, 3>{}); break;
         }
-        if (found && found->value != kPaired) {
-          m.link(enc, found->value);
-          found->value = kPaired;
-          --waiting;
-          continue;
-        }
-        if (found || own_taken) {
-          error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
-          return false;
-        }
-        table_[h] = {own, enc, stamp_};
-        ++waiting;
+      }
+      if (!ok) {
+        error = "cavity boundary is not a manifold (a facet shared by more than two new simplices)";
+        return false;
       }
     }
     if (waiting != 0) {
