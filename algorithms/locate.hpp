@@ -100,6 +100,9 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
     }
     const int offset = rng.next(V);
     int zeros = 0;
+    // Unrolled: Bowyer-Watson on uniform 2D 10^5 points ran 0.9 % fewer
+    // instructions, Lawson 0.5 % (3D: 0.1 % and 0.4 %).
+#pragma GCC unroll 4
     for (int j = 0; j < V; ++j) {
       const int f = offset + j < V ? offset + j : offset + j - V;
       if (f == from) continue;
