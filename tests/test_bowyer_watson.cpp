@@ -519,6 +519,31 @@ TEST_CASE("bw: insertion orders are permutations and deterministic", "[bw]") {
   }
 }
 
+// The 2D and 3D tables are Skilling's transform read as state machines
+// (variants/insertion_order.cpp): the same index on every cell of the small
+// grids, and on random cells up to the largest level count a 64-bit key holds.
+TEST_CASE("bw: the Hilbert tables give Skilling's index", "[bw]") {
+  auto same = [](std::array<std::uint32_t, 3> c, int n, int bits) {
+    std::array<std::uint32_t, 3> d = c;
+    return hilbert_key(c.data(), n, bits) == hilbert_key_skilling(d.data(), n, bits);
+  };
+  for (int bits = 1; bits <= 5; ++bits) {
+    const std::uint32_t cells = 1u << bits;
+    for (std::uint32_t x = 0; x < cells; ++x)
+      for (std::uint32_t y = 0; y < cells; ++y) {
+        REQUIRE(same({x, y, 0}, 2, bits));
+        for (std::uint32_t z = 0; z < cells; ++z) REQUIRE(same({x, y, z}, 3, bits));
+      }
+  }
+  std::mt19937_64 g(5);
+  for (int n : {2, 3})
+    for (int bits = 6; bits <= 64 / n; ++bits)
+      for (int trial = 0; trial < 2000; ++trial) {
+        const std::uint64_t mask = (std::uint64_t(1) << bits) - 1;
+        REQUIRE(same({std::uint32_t(g() & mask), std::uint32_t(g() & mask), std::uint32_t(g() & mask)}, n, bits));
+      }
+}
+
 TEST_CASE("bw: unknown names are usage errors", "[bw]") {
   RunOptions o;
   o.kernel = "mp";

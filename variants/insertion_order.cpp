@@ -24,7 +24,7 @@ InsertionOrder parse_insertion_order(std::string_view name) {
                    "' (expected input, random, brio or hilbert)");
 }
 
-// 3D (any n): Skilling 2004: convert axes to the "transposed" Hilbert index in place
+// n dimensions: Skilling 2004: convert axes to the "transposed" Hilbert index in place
 // (undo the excess rotations/reflections from the top bit down, then Gray
 // encode), and read the index off bit-plane by bit-plane.
 // 2D: a 4-state machine, one table look-up per two levels.  The state is the
@@ -68,25 +68,71 @@ constexpr std::array<std::uint8_t, 64> kHilbert2x2 = [] {
 }();
 }  // namespace
 
-std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
-  if (n == 2) {
-    std::uint64_t key = 0;
-    unsigned m = 0;
-    int b = bits;
-    if (b & 1) {  // an odd level first, then two at a time
-      --b;
-      const unsigned e = kHilbert2[(((x[0] >> b) & 1u) << 1) | ((x[1] >> b) & 1u)];
-      key = e >> 2;
-      m = e & 3u;
+// 3D: Skilling's transform read as a state machine, one table look-up per level.
+// At each level Skilling's loop reads the level's bits t (the raw bits r under
+// the transform the levels above left on the lower bits), then reflects x[0]'s
+// lower bits (t_i set) or exchanges them with x[i]'s (t_i clear), i = 0, 1, 2:
+// the transform is a signed permutation of the axes (48 of them), updated per
+// level from t alone. The Gray code g of t and the parity P of x[2]'s Gray bits
+// on the levels above (Skilling's final XOR) give the level's digit, g ^ (P P P).
+// State: (permutation, reflections, P); the table is derived from those rules,
+// and read two levels at a time as in 2D.
+namespace {
+struct AxisTransform {  // lower bit j = r[perm[j]] ^ flip[j]
+  int perm[3];
+  int flip[3];
+};
+constexpr std::array<std::array<int, 3>, 6> kPerms3 = {
+    {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+constexpr int state3(const AxisTransform& a, int parity) {
+  int p = 0;
+  while (!(kPerms3[p][0] == a.perm[0] && kPerms3[p][1] == a.perm[1])) ++p;
+  return ((p * 8 + (a.flip[0] << 2 | a.flip[1] << 1 | a.flip[2])) << 1) | parity;
+}
+// (state << 3 | r) -> (next state << 3 | digit), r = (x0, x1, x2) bits of the level.
+constexpr std::array<std::uint16_t, 96 * 8> kHilbert3 = [] {
+  std::array<std::uint16_t, 96 * 8> t{};
+  for (int p = 0; p < 6; ++p)
+    for (int fl = 0; fl < 8; ++fl)
+      for (int parity = 0; parity < 2; ++parity)
+        for (int r = 0; r < 8; ++r) {
+          AxisTransform a{{kPerms3[p][0], kPerms3[p][1], kPerms3[p][2]}, {fl >> 2 & 1, fl >> 1 & 1, fl & 1}};
+          const int raw[3] = {r >> 2 & 1, r >> 1 & 1, r & 1};
+          int bit[3];
+          for (int j = 0; j < 3; ++j) bit[j] = raw[a.perm[j]] ^ a.flip[j];
+          for (int i = 0; i < 3; ++i) {
+            if (bit[i]) {
+              a.flip[0] ^= 1;
+            } else {
+              const int tp = a.perm[0], tf = a.flip[0];
+              a.perm[0] = a.perm[i], a.flip[0] = a.flip[i];
+              a.perm[i] = tp, a.flip[i] = tf;
+            }
+          }
+          const int g0 = bit[0], g1 = bit[1] ^ g0, g2 = bit[2] ^ g1;
+          const int digit = ((g0 << 2) | (g1 << 1) | g2) ^ (parity ? 7 : 0);
+          t[(state3({{kPerms3[p][0], kPerms3[p][1], kPerms3[p][2]}, {fl >> 2 & 1, fl >> 1 & 1, fl & 1}}, parity)
+             << 3) | r] = static_cast<std::uint16_t>((state3(a, parity ^ g2) << 3) | digit);
+        }
+  return t;
+}();
+static_assert(state3({{0, 1, 2}, {0, 0, 0}}, 0) == 0);  // the machine starts in state 0
+// Two levels per look-up: (state, 2 bits of x0, of x1, of x2) -> (state, 6 digit
+// bits), kHilbert3 applied twice.
+constexpr std::array<std::uint16_t, 96 * 64> kHilbert3x2 = [] {
+  std::array<std::uint16_t, 96 * 64> t{};
+  for (int m = 0; m < 96; ++m)
+    for (int in = 0; in < 64; ++in) {
+      const int hi = (in >> 3 & 4) | (in >> 2 & 2) | (in >> 1 & 1), lo = (in >> 2 & 4) | (in >> 1 & 2) | (in & 1);
+      const int e1 = kHilbert3[(m << 3) | hi];
+      const int e2 = kHilbert3[(e1 & ~7) | lo];
+      t[(m << 6) | in] = static_cast<std::uint16_t>(((e2 >> 3) << 6) | ((e1 & 7) << 3) | (e2 & 7));
     }
-    while (b > 0) {
-      b -= 2;
-      const unsigned e = kHilbert2x2[(m << 4) | (((x[0] >> b) & 3u) << 2) | ((x[1] >> b) & 3u)];
-      key = (key << 4) | (e >> 2);
-      m = e & 3u;
-    }
-    return key;
-  }
+  return t;
+}();
+}  // namespace
+
+std::uint64_t hilbert_key_skilling(std::uint32_t* x, int n, int bits) {
   const std::uint32_t top = std::uint32_t(1) << (bits - 1);
   for (std::uint32_t q = top; q > 1; q >>= 1) {
     const std::uint32_t low = q - 1;
@@ -108,6 +154,47 @@ std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
   for (int b = bits - 1; b >= 0; --b)
     for (int i = 0; i < n; ++i) key = (key << 1) | ((x[i] >> b) & 1u);
   return key;
+}
+
+std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
+  if (n == 2) {
+    std::uint64_t key = 0;
+    unsigned m = 0;
+    int b = bits;
+    if (b & 1) {  // an odd level first, then two at a time
+      --b;
+      const unsigned e = kHilbert2[(((x[0] >> b) & 1u) << 1) | ((x[1] >> b) & 1u)];
+      key = e >> 2;
+      m = e & 3u;
+    }
+    while (b > 0) {
+      b -= 2;
+      const unsigned e = kHilbert2x2[(m << 4) | (((x[0] >> b) & 3u) << 2) | ((x[1] >> b) & 3u)];
+      key = (key << 4) | (e >> 2);
+      m = e & 3u;
+    }
+    return key;
+  }
+  if (n == 3) {
+    std::uint64_t key = 0;
+    unsigned m = 0;
+    int b = bits;
+    if (b & 1) {  // an odd level first, then two at a time
+      --b;
+      const unsigned e = kHilbert3[(((x[0] >> b) & 1u) << 2) | (((x[1] >> b) & 1u) << 1) | ((x[2] >> b) & 1u)];
+      key = e & 7u;
+      m = e >> 3;
+    }
+    while (b > 0) {
+      b -= 2;
+      const unsigned e =
+          kHilbert3x2[(m << 6) | (((x[0] >> b) & 3u) << 4) | (((x[1] >> b) & 3u) << 2) | ((x[2] >> b) & 3u)];
+      key = (key << 6) | (e & 63u);
+      m = e >> 6;
+    }
+    return key;
+  }
+  return hilbert_key_skilling(x, n, bits);
 }
 
 namespace {

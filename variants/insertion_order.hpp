@@ -83,7 +83,11 @@ void apply_order(std::vector<T>& v, const Order& order, bool back, std::vector<b
   }
 }
 
-// Hilbert index of grid coordinates x[0..n-1] (each < 2^bits), n * bits <= 64.
+// Hilbert index of grid coordinates x[0..n-1] (each < 2^bits), n * bits <= 64
+// (x may be overwritten): 2D and 3D by table look-ups, other n by Skilling's
+// transform, whose index hilbert_key_skilling gives for every n (the reference
+// the tables are checked against).
 std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits);
+std::uint64_t hilbert_key_skilling(std::uint32_t* x, int n, int bits);
 
 }  // namespace dlab
