@@ -257,21 +257,26 @@ class Restar {
       stamp_ = 1;
     }
     const std::size_t mask = table_.size() - 1;
+    // Locals: the mesh's and the table's uint32 stores may alias the members,
+    // which g++ then reloads after each.
+    Entry* const table = table_.data();
+    const std::uint32_t stamp = stamp_;
+    const int shift = shift_;
     std::uint32_t waiting = 0;
     // Registers facet `enc` of a new simplex under (own, partner) and links
     // it to its partner if that waits; false: a facet of more than two new
     // simplices. Always inline: g++ 12 left it out of line (5.2 % more).
     auto register_facet = [&](std::uint32_t enc, std::uint64_t own,
                               std::uint64_t partner) __attribute__((always_inline)) {
-      std::size_t h = static_cast<std::size_t>((std::min(own, partner) * 0x9E3779B97F4A7C15ull) >> shift_);
+      std::size_t h = static_cast<std::size_t>((std::min(own, partner) * 0x9E3779B97F4A7C15ull) >> shift);
       Entry* found = nullptr;  // the partner's entry
       bool own_taken = false;
-      for (; table_[h].stamp == stamp_; h = (h + 1) & mask) {
-        if (table_[h].key == partner) {
-          found = &table_[h];
+      for (; table[h].stamp == stamp; h = (h + 1) & mask) {
+        if (table[h].key == partner) {
+          found = &table[h];
           break;
         }
-        own_taken |= table_[h].key == own;
+        own_taken |= table[h].key == own;
       }
       if (found && found->value != kPaired) {
         m.link(enc, found->value);
@@ -280,7 +285,7 @@ class Restar {
         return true;
       }
       if (found || own_taken) return false;
-      table_[h] = {own, enc, stamp_};
+      table[h] = {own, enc, stamp};
       ++waiting;
       return true;
     };
