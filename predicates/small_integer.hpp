@@ -47,6 +47,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -242,11 +243,41 @@ Sign first_by_decreasing_key(const double (&key)[N], const double (&term)[N]) {
     if (term[i] != 0 && (best < 0 || key[i] > key[best])) best = i;
   return best < 0 ? Sign::zero : sign_of(term[best]);  // zero: a degenerate simplex
 }
+#if defined(__SSE2__)
+// The same answer without branches, candidates in lanes: (k01, t01) and (k23,
+// t23) hold points 0-3 two by two, and with Fifth the low lanes of (k4, t4) hold
+// point 4. The keys of zero terms become -inf (every key is finite), the largest
+// key is found, and of the points holding it (a tie: a repeated point) the lowest
+// index answers; when every term is zero, every point holds -inf and term 0 is 0.
+template <bool Fifth>
+[[gnu::always_inline]] inline Sign first_by_decreasing_key_sse2(__m128d k01, __m128d t01, __m128d k23, __m128d t23,
+                                                                __m128d k4 = _mm_setzero_pd(),
+                                                                __m128d t4 = _mm_setzero_pd()) {
+  const __m128d zero = _mm_setzero_pd(), none = _mm_set1_pd(-std::numeric_limits<double>::infinity());
+  auto live = [&](__m128d key, __m128d t) {
+    const __m128d nonzero = _mm_cmpneq_pd(t, zero);
+    return _mm_or_pd(_mm_and_pd(nonzero, key), _mm_andnot_pd(nonzero, none));
+  };
+  const __m128d a = live(k01, t01), b = live(k23, t23);
+  const __m128d c = live(_mm_unpacklo_pd(k4, k4), _mm_unpacklo_pd(t4, t4));
+  __m128d top = _mm_max_pd(a, b);
+  if constexpr (Fifth) top = _mm_max_pd(top, c);
+  top = _mm_max_pd(top, _mm_shuffle_pd(top, top, 1));
+  int holders = _mm_movemask_pd(_mm_cmpeq_pd(a, top)) | _mm_movemask_pd(_mm_cmpeq_pd(b, top)) << 2;
+  if constexpr (Fifth) holders |= (_mm_movemask_pd(_mm_cmpeq_pd(c, top)) & 1) << 4;
+  double term[5];
+  _mm_storeu_pd(term, t01);
+  _mm_storeu_pd(term + 2, t23);
+  term[4] = _mm_cvtsd_f64(t4);
+  return sign_of(term[__builtin_ctz(static_cast<unsigned>(holders))]);
+}
+#endif
 }  // namespace detail
 // The walk's terms (detail::first_by_decreasing_key) are exact.
 static_assert(6 * ic_bound * ic_bound <= two53 && 24 * is_bound * is_bound * is_bound <= two53);
 
-inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+// Two evaluations, scalar and SSE2, as for insphere_sos below.
+inline SosAnswer incircle_sos_scalar(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   if (!all_int<2, 4>({&a, &b, &c, &d})) return {false, Sign::zero, false};
   const double v[4][2] = {{a[0] - d[0], a[1] - d[1]}, {b[0] - d[0], b[1] - d[1]},
                           {c[0] - d[0], c[1] - d[1]}, {0, 0}};
@@ -267,9 +298,55 @@ inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c,
   return {true, detail::first_by_decreasing_key<4>(key, term), true};
 }
 
-// Inline: its call made perturbed<AdaptiveKernel>::insphere_lattice save and restore five registers.
-[[gnu::always_inline]] inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c,
-                                                     const Point3& d, const Point3& e) {
+#if defined(__SSE2__)
+// The same values two at a time (a and b in one pair of lanes); exact under the
+// certificate, so each is the scalar twin's (tests/test_small_integer.cpp).
+inline SosAnswer incircle_sos_sse2(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  if (!all_int<2, 4>({&a, &b, &c, &d})) return {false, Sign::zero, false};
+  const __m128d dxy = _mm_loadu_pd(d.data());
+  const __m128d axy = _mm_sub_pd(_mm_loadu_pd(a.data()), dxy), bxy = _mm_sub_pd(_mm_loadu_pd(b.data()), dxy),
+                cxy = _mm_sub_pd(_mm_loadu_pd(c.data()), dxy);
+  // Every |difference| <= B (no NaN: all_int leaves integers, infinities and a finite d).
+  const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  const __m128d m = _mm_max_pd(_mm_max_pd(_mm_and_pd(axy, abs_mask), _mm_and_pd(bxy, abs_mask)),
+                               _mm_and_pd(cxy, abs_mask));
+  if (_mm_movemask_pd(_mm_cmple_pd(m, _mm_set1_pd(ic_bound))) != 3) return {false, Sign::zero, false};
+  const __m128d x = _mm_unpacklo_pd(axy, bxy), y = _mm_unpackhi_pd(axy, bxy);  // (adx, bdx), (ady, bdy)
+  const __m128d ab_bc = _mm_sub_pd(_mm_mul_pd(x, _mm_unpackhi_pd(bxy, cxy)),
+                                   _mm_mul_pd(y, _mm_unpacklo_pd(bxy, cxy)));  // (ab, bc)
+  const __m128d cross = _mm_mul_pd(cxy, _mm_shuffle_pd(axy, axy, 1));       // (cdx ady, cdy adx)
+  const __m128d ca = _mm_sub_sd(cross, _mm_unpackhi_pd(cross, cross));
+  const __m128d bc_ca = _mm_shuffle_pd(ab_bc, ca, 1);
+  const __m128d lifts = _mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y));  // (alift, blift)
+  const __m128d cc = _mm_mul_pd(cxy, cxy);
+  const double clift = _mm_cvtsd_f64(cc) + _mm_cvtsd_f64(_mm_unpackhi_pd(cc, cc));
+  const __m128d v = _mm_mul_pd(lifts, bc_ca);  // (alift bc, blift ca)
+  const double ab = _mm_cvtsd_f64(ab_bc), bc = _mm_cvtsd_f64(bc_ca), cav = _mm_cvtsd_f64(ca);
+  const Sign exact = sign_of((_mm_cvtsd_f64(v) + _mm_cvtsd_f64(_mm_unpackhi_pd(v, v))) + clift * ab);
+  if (exact != Sign::zero) return {true, exact, false};
+  const __m128d kab = _mm_add_pd(_mm_mul_pd(x, _mm_set1_pd(ic_key_base)), y);  // (key a, key b)
+  const double kc = lex_key2(_mm_cvtsd_f64(cxy), _mm_cvtsd_f64(_mm_unpackhi_pd(cxy, cxy)));
+  // Terms (bc, ca), (ab, d's); d's key is 0.
+  return {true,
+          detail::first_by_decreasing_key_sse2<false>(kab, bc_ca, _mm_set_sd(kc),
+                                                      _mm_set_pd(-((ab + bc) + cav), ab)),
+          true};
+}
+#endif
+
+inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+#if defined(__SSE2__)
+  return incircle_sos_sse2(a, b, c, d);
+#else
+  return incircle_sos_scalar(a, b, c, d);
+#endif
+}
+
+// Two evaluations, scalar and SSE2; insphere_sos uses SSE2 where the target has
+// it. Inline: its call made perturbed<AdaptiveKernel>::insphere_lattice save and
+// restore five registers.
+[[gnu::always_inline]] inline SosAnswer insphere_sos_scalar(const Point3& a, const Point3& b, const Point3& c,
+                                                            const Point3& d, const Point3& e) {
   if (!all_int<3, 5>({&a, &b, &c, &d, &e})) return {false, Sign::zero, false};
   const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
   const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
@@ -299,6 +376,68 @@ inline SosAnswer incircle_sos(const Point2& a, const Point2& b, const Point2& c,
                          lex_key3(dex, dey, dez), 0};
   const double term[5] = {-bcd, cda, -dab, abc, -((abc - bcd) + (cda - dab))};
   return {true, detail::first_by_decreasing_key<5>(key, term), true};
+}
+
+#if defined(__SSE2__)
+// The same minors, lifts, keys and terms two at a time, laid out as the insphere
+// filter lays them (predicates/adaptive_kernel.hpp): a and c in one pair of lanes,
+// b and d in the other. Under the certificate every operation is exact, so each
+// value is the scalar twin's, whatever the order (tests/test_small_integer.cpp).
+[[gnu::always_inline]] inline SosAnswer insphere_sos_sse2(const Point3& a, const Point3& b, const Point3& c,
+                                                          const Point3& d, const Point3& e) {
+  if (!all_int<3, 5>({&a, &b, &c, &d, &e})) return {false, Sign::zero, false};
+  const __m128d exy = _mm_loadu_pd(e.data()), ez = _mm_set1_pd(e[2]);
+  const __m128d axy = _mm_sub_pd(_mm_loadu_pd(a.data()), exy), bxy = _mm_sub_pd(_mm_loadu_pd(b.data()), exy),
+                cxy = _mm_sub_pd(_mm_loadu_pd(c.data()), exy), dxy = _mm_sub_pd(_mm_loadu_pd(d.data()), exy);
+  const __m128d z1 = _mm_sub_pd(_mm_set_pd(c[2], a[2]), ez);  // (aez, cez)
+  const __m128d z2 = _mm_sub_pd(_mm_set_pd(d[2], b[2]), ez);  // (bez, dez)
+  // Every |difference| <= B (no NaN: all_int leaves integers, infinities and a finite e).
+  const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  __m128d m = _mm_max_pd(_mm_and_pd(axy, abs_mask), _mm_and_pd(bxy, abs_mask));
+  m = _mm_max_pd(m, _mm_max_pd(_mm_and_pd(cxy, abs_mask), _mm_and_pd(dxy, abs_mask)));
+  m = _mm_max_pd(m, _mm_max_pd(_mm_and_pd(z1, abs_mask), _mm_and_pd(z2, abs_mask)));
+  if (_mm_movemask_pd(_mm_cmple_pd(m, _mm_set1_pd(is_bound))) != 3) return {false, Sign::zero, false};
+  const __m128d x1 = _mm_unpacklo_pd(axy, cxy), y1 = _mm_unpackhi_pd(axy, cxy);  // (aex, cex), (aey, cey)
+  const __m128d x2 = _mm_unpacklo_pd(bxy, dxy), y2 = _mm_unpackhi_pd(bxy, dxy);  // (bex, dex), (bey, dey)
+  auto swap = [](__m128d v) { return _mm_shuffle_pd(v, v, 1); };
+  const __m128d neg_high = _mm_set_pd(-0.0, 0.0);  // (x, y) -> (x, -y) by XOR
+  const __m128d ab_cd = _mm_sub_pd(_mm_mul_pd(x1, y2), _mm_mul_pd(x2, y1));
+  const __m128d bc_da = _mm_sub_pd(_mm_mul_pd(x2, swap(y1)), _mm_mul_pd(swap(x1), y2));
+  const __m128d ac_bd = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(x1, x2), _mm_unpackhi_pd(y1, y2)),
+                                   _mm_mul_pd(_mm_unpackhi_pd(x1, x2), _mm_unpacklo_pd(y1, y2)));
+  const __m128d ac = _mm_unpacklo_pd(ac_bd, ac_bd), bd = _mm_unpackhi_pd(ac_bd, ac_bd);
+  const __m128d p = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(z1, bc_da), _mm_mul_pd(_mm_xor_pd(z2, neg_high), ac)),
+                               _mm_mul_pd(swap(z1), ab_cd));  // (abc, cda)
+  const __m128d q = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(z2, swap(ab_cd)), _mm_mul_pd(_mm_xor_pd(swap(z1), neg_high), bd)),
+                               _mm_mul_pd(swap(z2), bc_da));  // (bcd, dab)
+  const __m128d l1 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x1, x1), _mm_mul_pd(y1, y1)), _mm_mul_pd(z1, z1));
+  const __m128d l2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x2, x2), _mm_mul_pd(y2, y2)), _mm_mul_pd(z2, z2));
+  // (dlift abc - clift dab, blift cda - alift bcd)
+  const __m128d r = _mm_sub_pd(_mm_mul_pd(swap(l2), p), swap(_mm_mul_pd(l1, q)));
+  const Sign exact = sign_of(_mm_cvtsd_f64(r) + _mm_cvtsd_f64(swap(r)));
+  if (exact != Sign::zero) return {true, exact, false};
+  const __m128d w = _mm_set1_pd(is_key_base);
+  const __m128d k1 = _mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_mul_pd(x1, w), y1), w), z1);  // (key a, key c)
+  const __m128d k2 = _mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_mul_pd(x2, w), y2), w), z2);  // (key b, key d)
+  const __m128d nq = _mm_xor_pd(q, _mm_set1_pd(-0.0));  // (-bcd, -dab)
+  const __m128d pq = _mm_sub_pd(p, q);                  // (abc - bcd, cda - dab)
+  const double last = -(_mm_cvtsd_f64(pq) + _mm_cvtsd_f64(swap(pq)));
+  // Terms (-bcd, cda), (-dab, abc), and e's, of key 0.
+  return {true,
+          detail::first_by_decreasing_key_sse2<true>(_mm_unpacklo_pd(k1, k2), _mm_move_sd(p, nq),
+                                                     _mm_unpackhi_pd(k1, k2), _mm_shuffle_pd(nq, p, 1),
+                                                     _mm_setzero_pd(), _mm_set_sd(last)),
+          true};
+}
+#endif
+
+[[gnu::always_inline]] inline SosAnswer insphere_sos(const Point3& a, const Point3& b, const Point3& c,
+                                                     const Point3& d, const Point3& e) {
+#if defined(__SSE2__)
+  return insphere_sos_sse2(a, b, c, d, e);
+#else
+  return insphere_sos_scalar(a, b, c, d, e);
+#endif
 }
 
 }  // namespace dlab::small_integer

@@ -185,6 +185,8 @@ TEST_CASE("small_integer: the symbolic walk equals perturbed<mp>, ties included"
     if (t % 7 == 0) q[4] = q[t % 4];  // a repeated point: ties in the ranks
     const auto r = small_integer::insphere_sos(q[0], q[1], q[2], q[3], q[4]);
     REQUIRE(r.known);
+    const auto rs = small_integer::insphere_sos_scalar(q[0], q[1], q[2], q[3], q[4]);
+    REQUIRE((rs.known && rs.sign == r.sign && rs.by_perturbation == r.by_perturbation));
     REQUIRE(r.sign == pm.insphere(q[0], q[1], q[2], q[3], q[4]));
     REQUIRE(r.by_perturbation == (mp.insphere(q[0], q[1], q[2], q[3], q[4]) == Sign::zero));
     walked += r.by_perturbation;
@@ -192,6 +194,8 @@ TEST_CASE("small_integer: the symbolic walk equals perturbed<mp>, ties included"
     if (t % 7 == 1) p[3] = p[t % 3];
     const auto s = small_integer::incircle_sos(p[0], p[1], p[2], p[3]);
     REQUIRE(s.known);
+    const auto ss = small_integer::incircle_sos_scalar(p[0], p[1], p[2], p[3]);
+    REQUIRE((ss.known && ss.sign == s.sign && ss.by_perturbation == s.by_perturbation));
     REQUIRE(s.sign == pm.incircle(p[0], p[1], p[2], p[3]));
     REQUIRE(s.by_perturbation == (mp.incircle(p[0], p[1], p[2], p[3]) == Sign::zero));
     walked += s.by_perturbation;
@@ -203,6 +207,58 @@ TEST_CASE("small_integer: the symbolic walk equals perturbed<mp>, ties included"
   CHECK(small_integer::insphere_sos({512, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {0, 0, 0}).known);
   CHECK_FALSE(small_integer::incircle_sos({4097, 0}, {0, 1}, {1, 1}, {0, 0}).known);
   CHECK(small_integer::incircle_sos({4096, 0}, {0, 1}, {1, 1}, {0, 0}).known);
+}
+
+// The twins of insphere_sos and incircle_sos refuse a difference beyond B in
+// every place (the SSE2 twins check them two by two) and a non-finite coordinate
+// in every place, and certify B itself there.
+namespace {
+template <int D, int N, class Twins>
+void twins_at_the_bound(std::array<Point<D>, N> q, double bound, Twins both) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (double shift : {0.0, 0x1p51, -1000.0}) {
+    std::array<Point<D>, N> s = q;
+    for (auto& p : s)
+      for (auto& x : p) x += shift;
+    REQUIRE(both(s));
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < D; ++j) {
+        for (double bad : {inf, -inf, nan}) {
+          std::array<Point<D>, N> r = s;
+          r[i][j] = bad;
+          CHECK_FALSE(both(r));
+        }
+        if (i == N - 1) continue;  // the reference point
+        for (double sign : {1.0, -1.0}) {
+          std::array<Point<D>, N> r = s;
+          r[i][j] = s[N - 1][j] + sign * bound;
+          CHECK(both(r));
+          r[i][j] = s[N - 1][j] + sign * (bound + 1);
+          CHECK_FALSE(both(r));
+        }
+      }
+  }
+}
+template <class A>
+bool same_answer(const A& s, const A& v) {
+  REQUIRE(s.known == v.known);
+  if (s.known) REQUIRE((s.sign == v.sign && s.by_perturbation == v.by_perturbation));
+  return s.known;
+}
+}  // namespace
+
+TEST_CASE("small_integer: the sos twins at the bound, place by place", "[small_integer]") {
+  using namespace small_integer;
+  twins_at_the_bound<3, 5>({Point3{1, 0, 0}, Point3{0, 1, 0}, Point3{0, 0, 1}, Point3{1, 1, 1}, Point3{0, 0, 0}},
+                           is_bound, [](const std::array<Point3, 5>& q) {
+                             return same_answer(insphere_sos_scalar(q[0], q[1], q[2], q[3], q[4]),
+                                                insphere_sos(q[0], q[1], q[2], q[3], q[4]));
+                           });
+  twins_at_the_bound<2, 4>({Point2{1, 0}, Point2{0, 1}, Point2{1, 1}, Point2{0, 0}}, ic_bound,
+                           [](const std::array<Point2, 4>& q) {
+                             return same_answer(incircle_sos_scalar(q[0], q[1], q[2], q[3]),
+                                                incircle_sos(q[0], q[1], q[2], q[3]));
+                           });
 }
 
 // The walk's keys (lex_key2, lex_key3) at the edges of their range [-B, B]^D:
