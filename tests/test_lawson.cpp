@@ -284,6 +284,24 @@ TEST_CASE("3D 2-3 and 3-2 flip primitives relink consistently", "[lawson]") {
   CHECK(sorted(finite(m)) == sorted(test::canonical_simplices<3>(two)));
 }
 
+// slot_of in 3D compares the four vertex words at once (flips.hpp): every slot,
+// a vertex absent, the ghost, and the lowest slot when a (corrupt) simplex holds
+// a vertex twice, as the loop of 2D answers.
+TEST_CASE("slot_of: the first slot holding a vertex, or -1", "[lawson]") {
+  Mesh<3> m3;
+  const std::uint32_t t = m3.create({7, 3, 9, kGhost});
+  const std::uint32_t twice = m3.create({5, 8, 5, 8});
+  for (int j = 0; j < 4; ++j) CHECK(FlipMesh<3>::slot_of(m3, t, m3.vertex(t, j)) == j);
+  CHECK(FlipMesh<3>::slot_of(m3, t, 4) == -1);
+  CHECK(FlipMesh<3>::slot_of(m3, t, 0) == -1);
+  CHECK(FlipMesh<3>::slot_of(m3, twice, 5) == 0);
+  CHECK(FlipMesh<3>::slot_of(m3, twice, 8) == 1);
+  Mesh<2> m2;
+  const std::uint32_t u = m2.create({4, 2, 6});
+  for (int j = 0; j < 3; ++j) CHECK(FlipMesh<2>::slot_of(m2, u, m2.vertex(u, j)) == j);
+  CHECK(FlipMesh<2>::slot_of(m2, u, 5) == -1);
+}
+
 TEST_CASE("flip-existing: 2D converges to Delaunay, 3D reports when stuck", "[lawson]") {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const std::vector<Point2> p2 = gen::uniform<2>(300, seed);
