@@ -68,15 +68,15 @@ constexpr std::array<std::uint8_t, 64> kHilbert2x2 = [] {
 }();
 }  // namespace
 
-// 3D: Skilling's transform read as a state machine, one table look-up per level.
+// 3D: Skilling's transform read as a state machine (kHilbert3: one look-up a
+// level; kHilbert3x2, in use: two levels a look-up, as in 2D).
 // At each level Skilling's loop reads the level's bits t (the raw bits r under
 // the transform the levels above left on the lower bits), then reflects x[0]'s
 // lower bits (t_i set) or exchanges them with x[i]'s (t_i clear), i = 0, 1, 2:
 // the transform is a signed permutation of the axes (48 of them), updated per
 // level from t alone. The Gray code g of t and the parity P of x[2]'s Gray bits
 // on the levels above (Skilling's final XOR) give the level's digit, g ^ (P P P).
-// State: (permutation, reflections, P); the table is derived from those rules,
-// and read two levels at a time as in 2D.
+// State: (permutation, reflections, P); the table is derived from those rules.
 namespace {
 struct AxisTransform {  // lower bit j = r[perm[j]] ^ flip[j]
   int perm[3];
@@ -111,8 +111,7 @@ constexpr std::array<std::uint16_t, 96 * 8> kHilbert3 = [] {
           }
           const int g0 = bit[0], g1 = bit[1] ^ g0, g2 = bit[2] ^ g1;
           const int digit = ((g0 << 2) | (g1 << 1) | g2) ^ (parity ? 7 : 0);
-          t[(state3({{kPerms3[p][0], kPerms3[p][1], kPerms3[p][2]}, {fl >> 2 & 1, fl >> 1 & 1, fl & 1}}, parity)
-             << 3) | r] = static_cast<std::uint16_t>((state3(a, parity ^ g2) << 3) | digit);
+          t[(((p * 8 + fl) << 1 | parity) << 3) | r] = static_cast<std::uint16_t>((state3(a, parity ^ g2) << 3) | digit);
         }
   return t;
 }();
