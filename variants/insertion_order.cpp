@@ -49,27 +49,13 @@ constexpr std::array<std::uint8_t, 16> kHilbert2 = [] {
         if (m & 2) rx ^= 1, ry ^= 1;  // anti-transpose or half-turn: reflect
         const int digit = (rx << 1) | (rx ^ ry);
         const int sub = (rx == 0 && ry == 0) ? 1 : (rx == 1 && ry == 0) ? 2 : 0;
-        t[(m << 2) | (bx << 1) | by] = static_cast<std::uint8_t>((digit << 2) | (m ^ sub));
-      }
-  return t;
-}();
-// Two levels per look-up: (state, 2 bits of x, 2 bits of y) -> (4 digit bits,
-// state), kHilbert2 applied twice.
-constexpr std::array<std::uint8_t, 64> kHilbert2x2 = [] {
-  std::array<std::uint8_t, 64> t{};
-  for (int m = 0; m < 4; ++m)
-    for (int xb = 0; xb < 4; ++xb)
-      for (int yb = 0; yb < 4; ++yb) {
-        const int e1 = kHilbert2[(m << 2) | ((xb >> 1) << 1) | (yb >> 1)];
-        const int e2 = kHilbert2[((e1 & 3) << 2) | ((xb & 1) << 1) | (yb & 1)];
-        t[(m << 4) | (xb << 2) | yb] = static_cast<std::uint8_t>((((e1 >> 2) << 2 | (e2 >> 2)) << 2) | (e2 & 3));
+        t[(m << 2) | (bx << 1) | by] = static_cast<std::uint8_t>(((m ^ sub) << 2) | digit);
       }
   return t;
 }();
 }  // namespace
 
-// 3D: Skilling's transform read as a state machine (kHilbert3: one look-up a
-// level; kHilbert3x2, in use: two levels a look-up, as in 2D).
+// 3D: Skilling's transform read as a state machine.
 // At each level Skilling's loop reads the level's bits t (the raw bits r under
 // the transform the levels above left on the lower bits), then reflects x[0]'s
 // lower bits (t_i set) or exchanges them with x[i]'s (t_i clear), i = 0, 1, 2:
@@ -116,19 +102,55 @@ constexpr std::array<std::uint16_t, 96 * 8> kHilbert3 = [] {
   return t;
 }();
 static_assert(state3({{0, 1, 2}, {0, 0, 0}}, 0) == 0);  // the machine starts in state 0
-// Two levels per look-up: (state, 2 bits of x0, of x1, of x2) -> (state, 6 digit
-// bits), kHilbert3 applied twice.
-constexpr std::array<std::uint16_t, 96 * 64> kHilbert3x2 = [] {
-  std::array<std::uint16_t, 96 * 64> t{};
-  for (int m = 0; m < 96; ++m)
-    for (int in = 0; in < 64; ++in) {
-      const int hi = (in >> 3 & 4) | (in >> 2 & 2) | (in >> 1 & 1), lo = (in >> 2 & 4) | (in >> 1 & 2) | (in & 1);
-      const int e1 = kHilbert3[(m << 3) | hi];
-      const int e2 = kHilbert3[(e1 & ~7) | lo];
-      t[(m << 6) | in] = static_cast<std::uint16_t>(((e2 >> 3) << 6) | ((e1 & 7) << 3) | (e2 & 7));
+// Both machines' tables map (state << N | the level's bits, axis 0's highest) to
+// (next state << N | the level's N digits). Two levels a look-up: the table
+// applied twice, (state << 2N | two bits of each axis) -> (state << 2N | 2N digits).
+template <int N, int States, class One>
+constexpr std::array<std::uint16_t, (States << 2 * N)> two_levels(const One& one) {
+  constexpr int mask = (1 << N) - 1;
+  std::array<std::uint16_t, (States << 2 * N)> t{};
+  for (int m = 0; m < States; ++m)
+    for (int in = 0; in < (1 << 2 * N); ++in) {
+      int hi = 0, lo = 0;
+      for (int i = 0; i < N; ++i) {
+        const int two = in >> (2 * (N - 1 - i)) & 3;
+        hi = hi << 1 | two >> 1;
+        lo = lo << 1 | (two & 1);
+      }
+      const int e1 = one[(m << N) | hi], e2 = one[(e1 & ~mask) | lo];
+      t[(m << 2 * N) | in] = static_cast<std::uint16_t>((e2 >> N) << 2 * N | (e1 & mask) << N | (e2 & mask));
     }
   return t;
-}();
+}
+constexpr auto kHilbert2x2 = two_levels<2, 4>(kHilbert2);
+constexpr auto kHilbert3x2 = two_levels<3, 96>(kHilbert3);
+
+// The key of x on `bits` levels through the tables: an odd level first, then two at a time.
+template <int N, class One, class Two>
+[[gnu::always_inline]] inline std::uint64_t key_by_tables(const std::uint32_t* x, int bits, const One& one,
+                                                          const Two& two) {
+  auto level_bits = [&](int b, unsigned width) {
+    unsigned r = 0;
+    for (int i = 0; i < N; ++i) r = r << width | ((x[i] >> b) & ((1u << width) - 1));
+    return r;
+  };
+  std::uint64_t key = 0;
+  unsigned m = 0;
+  int b = bits;
+  if (b & 1) {
+    --b;
+    const unsigned e = one[level_bits(b, 1)];
+    key = e & ((1u << N) - 1);
+    m = e >> N;
+  }
+  while (b > 0) {
+    b -= 2;
+    const unsigned e = two[(m << 2 * N) | level_bits(b, 2)];
+    key = (key << 2 * N) | (e & ((1u << 2 * N) - 1));
+    m = e >> 2 * N;
+  }
+  return key;
+}
 }  // namespace
 
 std::uint64_t hilbert_key_skilling(std::uint32_t* x, int n, int bits) {
@@ -156,43 +178,8 @@ std::uint64_t hilbert_key_skilling(std::uint32_t* x, int n, int bits) {
 }
 
 std::uint64_t hilbert_key(std::uint32_t* x, int n, int bits) {
-  if (n == 2) {
-    std::uint64_t key = 0;
-    unsigned m = 0;
-    int b = bits;
-    if (b & 1) {  // an odd level first, then two at a time
-      --b;
-      const unsigned e = kHilbert2[(((x[0] >> b) & 1u) << 1) | ((x[1] >> b) & 1u)];
-      key = e >> 2;
-      m = e & 3u;
-    }
-    while (b > 0) {
-      b -= 2;
-      const unsigned e = kHilbert2x2[(m << 4) | (((x[0] >> b) & 3u) << 2) | ((x[1] >> b) & 3u)];
-      key = (key << 4) | (e >> 2);
-      m = e & 3u;
-    }
-    return key;
-  }
-  if (n == 3) {
-    std::uint64_t key = 0;
-    unsigned m = 0;
-    int b = bits;
-    if (b & 1) {  // an odd level first, then two at a time
-      --b;
-      const unsigned e = kHilbert3[(((x[0] >> b) & 1u) << 2) | (((x[1] >> b) & 1u) << 1) | ((x[2] >> b) & 1u)];
-      key = e & 7u;
-      m = e >> 3;
-    }
-    while (b > 0) {
-      b -= 2;
-      const unsigned e =
-          kHilbert3x2[(m << 6) | (((x[0] >> b) & 3u) << 4) | (((x[1] >> b) & 3u) << 2) | ((x[2] >> b) & 3u)];
-      key = (key << 6) | (e & 63u);
-      m = e >> 6;
-    }
-    return key;
-  }
+  if (n == 2) return key_by_tables<2>(x, bits, kHilbert2, kHilbert2x2);
+  if (n == 3) return key_by_tables<3>(x, bits, kHilbert3, kHilbert3x2);
   return hilbert_key_skilling(x, n, bits);
 }
 
