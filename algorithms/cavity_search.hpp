@@ -63,8 +63,22 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
   const Point<D>& p = pts[i];
   cavity.clear();
   records.clear();
+  // When a simplex joins the cavity, its neighbours' blocks (and lock words)
+  // are requested from memory: the breadth-first queue reaches them a few
+  // simplices later, so their cache misses overlap instead of following one
+  // another.  Bowyer-Watson on uniform 3D 10^6 points: 9-11 % less wall time
+  // for 2.8 % more instructions (papers/triangulation_costs.md, session 40).
+  auto prefetch_neighbours = [&](std::uint32_t s) [[gnu::always_inline]] {
+#pragma GCC unroll 4
+    for (int f = 0; f < V; ++f) {
+      const std::uint32_t t = Mesh<D>::simplex_of(guard.code(m.neighbour(s, f)));
+      __builtin_prefetch(m.vertices(t));
+      guard.prefetch(t);
+    }
+  };
   guard.set_mark(m, start, in);
   cavity.push_back(start);
+  prefetch_neighbours(start);
   for (std::size_t c = 0; c < cavity.size(); ++c) {
     const std::uint32_t s = cavity[c];
     // Unrolled: Bowyer-Watson on uniform 3D 10^5 points ran 2.5 % fewer
@@ -82,6 +96,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
         if (cf == Conflict::yes) {
           guard.set_mark(m, t, in);
           cavity.push_back(t);
+          prefetch_neighbours(t);
           continue;
         }
         guard.set_mark(m, t, out);

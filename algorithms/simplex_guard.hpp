@@ -42,6 +42,7 @@ namespace dlab {
 
 struct NoGuard {
   static constexpr bool acquire(std::uint32_t) { return true; }
+  static constexpr void prefetch(std::uint32_t) {}
   static constexpr void release_all() {}
   // The neighbour code in a neighbour word (TopBitMarks keeps a bit there).
   static constexpr std::uint32_t code(std::uint32_t word) { return word; }
@@ -62,6 +63,7 @@ class TopBitMarks {
   static_assert(Mesh<3>::encode(kMaxSlots - 1, 3) < kBit, "codes below the slot limit leave the top bit free");
 
   static constexpr bool acquire(std::uint32_t) { return true; }
+  static constexpr void prefetch(std::uint32_t) {}
   static constexpr void release_all() {}
   static constexpr std::uint32_t code(std::uint32_t word) { return word & ~kBit; }
 
@@ -107,6 +109,11 @@ class LockGuard {
     held_[held_count_++] = s;
     return true;
   }
+
+  // A hint only (no read): the search asks for a simplex's lock word before it
+  // takes it, as for its block.  always_inline: g++ 12 deletes calls to a
+  // function that only prefetches (papers/triangulation_costs.md, session 38).
+  [[gnu::always_inline]] void prefetch(std::uint32_t s) const { __builtin_prefetch(&words_[s]); }
 
   // The stamp of a held simplex.
   template <class M>
