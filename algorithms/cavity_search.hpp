@@ -68,7 +68,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
   // simplices later, so their cache misses overlap instead of following one
   // another.  Bowyer-Watson on uniform 3D 10^6 points: 9-11 % less wall time
   // for 2.8 % more instructions (papers/triangulation_costs.md, session 40).
-  auto prefetch_neighbours = [&](std::uint32_t s) [[gnu::always_inline]] {
+  auto prefetch_neighbours = [&](std::uint32_t s) {
 #pragma GCC unroll 4
     for (int f = 0; f < V; ++f) {
       const std::uint32_t t = Mesh<D>::simplex_of(guard.code(m.neighbour(s, f)));
