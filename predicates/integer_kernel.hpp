@@ -40,6 +40,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <tuple>
@@ -50,6 +51,7 @@
 #include "predicates/float_filter.hpp"
 #include "predicates/integer_grid.hpp"
 #include "predicates/kernel.hpp"
+#include "predicates/small_integer.hpp"
 #include "predicates/sos_walk.hpp"
 #include "predicates/wide_int.hpp"
 
@@ -388,7 +390,9 @@ class BasicIntegerKernel {
   // determinant (stage 1, "integer"), as CGAL's Epeck filters first:
   // - on grid points (the promise above): AdaptiveKernel's first stage on the
   //   coordinates (its static orient3d filter fitted to the same points), an
-  //   exact sign of their determinant where it answers;
+  //   exact sign of their determinant where it answers; and where it does
+  //   not, on small integer coordinates, small_integer's error-free
+  //   evaluation as the integer stage (grid_stage below);
   // - elsewhere: FloatFilter (predicates/float_filter.hpp) on the index
   //   differences rounded to double, with the base point at the origin. Its
   //   bound assumes of each coordinate difference only |computed - exact| <=
@@ -426,7 +430,7 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::orient2d<B>(q[0], q[1], q[2]); };
     if (grid_points_only2_)
       return first_then([&](auto rest) { return AdaptiveKernel::orient2d_first_then(a, b, c, rest); },
-                        [&](const auto&... x) { return integer_stage<B2, kSmall2, kTinyO2>(det, g2_.grid_index(x)...); });
+                        [&](const auto&... x) { return grid_stage<B2, kSmall2, kTinyO2, false>(g2_, det, x...); });
     return filter_then<B2, kSmall2, kTinyO2>(
         [](const auto&... x) { return FloatFilter{}.orient2d(x...); }, det, g2_.index(a), g2_.index(b),
         g2_.index(c));
@@ -441,7 +445,7 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::orient3d<B>(q[0], q[1], q[2], q[3]); };
     if (grid_points_only3_)
       return first_then([&](auto rest) { return first_.orient3d_first_then(a, b, c, d, rest); },
-                        [&](const auto&... x) { return integer_stage<B3, kSmall3, kTinyO3>(det, g3_.grid_index(x)...); });
+                        [&](const auto&... x) { return grid_stage<B3, kSmall3, kTinyO3, false>(g3_, det, x...); });
     return filter_then<B3, kSmall3, kTinyO3>(
         [](const auto&... x) { return FloatFilter{}.orient3d(x...); }, det, g3_.index(a), g3_.index(b),
         g3_.index(c), g3_.index(d));
@@ -508,7 +512,7 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::incircle<B>(q[0], q[1], q[2], q[3]); };
     if (grid_points_only2_)
       return first_then([&](auto rest) { return AdaptiveKernel::incircle_first_then(a, b, c, d, rest); },
-                        [&](const auto&... x) { return integer_stage<B2, kSmall2, kTinyIC, Walk>(det, g2_.grid_index(x)...); });
+                        [&](const auto&... x) { return grid_stage<B2, kSmall2, kTinyIC, Walk>(g2_, det, x...); });
     return filter_then<B2, kSmall2, kTinyIC>(
         [](const auto&... x) { return FloatFilter{}.incircle(x...); }, det, g2_.index(a), g2_.index(b),
         g2_.index(c), g2_.index(d));
@@ -519,10 +523,61 @@ class BasicIntegerKernel {
     constexpr auto det = []<int B>(const auto& q) { return intdet::insphere<B>(q[0], q[1], q[2], q[3], q[4]); };
     if (grid_points_only3_)
       return first_then([&](auto rest) { return AdaptiveKernel::insphere_first_then(a, b, c, d, e, rest); },
-                        [&](const auto&... x) { return integer_stage<B3, kSmall3, kTinyIS, Walk>(det, g3_.grid_index(x)...); });
+                        [&](const auto&... x) { return grid_stage<B3, kSmall3, kTinyIS, Walk>(g3_, det, x...); });
     return filter_then<B3, kSmall3, kTinyIS>(
         [](const auto&... x) { return FloatFilter{}.insphere(x...); }, det, g3_.index(a), g3_.index(b),
         g3_.index(c), g3_.index(d), g3_.index(e));
+  }
+
+  // The integer stage on grid points x (the base last). Where they are small
+  // integers (lattices), small_integer's error-free evaluation answers in its
+  // place at a fraction of its cost, with the same answer stage for stage: the
+  // coordinates are h = 2^e > 0 times the indices on every axis
+  // (integer_grid.hpp), so each determinant's sign, each orientation the
+  // walk asks and the points' lexicographic order are the indices'; a nonzero
+  // sign is the integer stage's, a zero is walked (Walk) or exact.
+  template <int B, int Small, int Tiny, bool Walk, class Grid, class Det, class... P>
+  static Staged grid_stage(const Grid& g, Det det, const P&... x) {
+    if (const std::optional<Staged> s = small_integer_stage<Walk>(x...)) return *s;
+    return integer_stage<B, Small, Tiny, Walk>(det, g.grid_index(x)...);
+  }
+  // small_integer's answer as the stage that would have given it; nullopt
+  // where it does not certify the points. Out of line, as the integer stage.
+  static std::optional<Staged> certified(const small_integer::Answer& r) {
+    return r.known ? std::optional<Staged>(Staged{r.sign, 1}) : std::nullopt;
+  }
+  static std::optional<Staged> certified(const small_integer::SosAnswer& r) {
+    if (!r.known) return std::nullopt;
+    return Staged{r.sign, static_cast<unsigned char>(r.by_perturbation ? walk_stage : 1)};
+  }
+  template <bool Walk>
+  [[gnu::noinline]] static std::optional<Staged> small_integer_stage(const Point2& a, const Point2& b,
+                                                                     const Point2& c) {
+    static_assert(!Walk);
+    if (!small_integer::is_int(c[0])) return std::nullopt;
+    return certified(small_integer::orient2d(a, b, c));
+  }
+  template <bool Walk>
+  [[gnu::noinline]] static std::optional<Staged> small_integer_stage(const Point2& a, const Point2& b,
+                                                                     const Point2& c, const Point2& d) {
+    if (!small_integer::is_int(d[0])) return std::nullopt;
+    if constexpr (Walk) return certified(small_integer::incircle_sos(a, b, c, d));
+    return certified(small_integer::incircle(a, b, c, d));
+  }
+  template <bool Walk>
+  [[gnu::noinline]] static std::optional<Staged> small_integer_stage(const Point3& a, const Point3& b,
+                                                                     const Point3& c, const Point3& d) {
+    static_assert(!Walk);
+    if (!small_integer::is_int(d[0])) return std::nullopt;
+    return certified(small_integer::orient3d(a, b, c, d));
+  }
+  template <bool Walk>
+  [[gnu::noinline]] static std::optional<Staged> small_integer_stage(const Point3& a, const Point3& b,
+                                                                     const Point3& c, const Point3& d,
+                                                                     const Point3& e) {
+    if (!small_integer::is_int(e[0])) return std::nullopt;
+    if constexpr (Walk) return certified(small_integer::insphere_sos(a, b, c, d, e));
+    return certified(small_integer::insphere(a, b, c, d, e));
   }
 
   // The integer stage on indices q (the base last). With Walk, an exact zero

@@ -8,7 +8,10 @@
 //    (radius 2^(T-1) - 1: every reduced index below 2^T, walked; 2^(T-1) + 1:
 //    past it, left to perturbed's walk), and far beyond it (indices near
 //    2^43, where the walk's int64 orientations would overflow);
-//  - reduced vectors whose order a key with narrower fields would swap.
+//  - reduced vectors whose order a key with narrower fields would swap;
+//  - grid points with small integer coordinates, where small_integer's
+//    evaluation stands in for the integer stage (integer_kernel.hpp,
+//    grid_stage): the same signs and stages as the determinant's.
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -103,7 +106,81 @@ bool lattice_subset_case() {
   return true;
 }
 
+// Five (four) points of {0..4}^D translated by a small integer (a generator
+// inside rc::prop): small integers, which small_integer certifies. Every
+// predicate's sign and stage, exact and perturbed, against GMP: a nonzero
+// determinant from stage 0 or 1, an exact zero as zero from the exact
+// predicate and walked by the perturbed one.
+template <int D>
+void small_integer_case() {
+  const double shift = *rc::gen::inRange(-100, 100);
+  std::vector<Point<D>> p(D + 2);
+  for (Point<D>& x : p)
+    for (double& c : x) c = shift + *rc::gen::inRange(0, 5);
+  const IntegerKernel k = fitted<D>(p);
+  const GmpKernel exact;
+  Staged o, e, w;
+  Sign want_o, want_e;
+  if constexpr (D == 3) {
+    o = k.orient3d_staged(p[0], p[1], p[2], p[3]);
+    want_o = exact.orient3d(p[0], p[1], p[2], p[3]);
+    e = k.insphere_staged(p[0], p[1], p[2], p[3], p[4]);
+    want_e = exact.insphere(p[0], p[1], p[2], p[3], p[4]);
+  } else {
+    o = k.orient2d_staged(p[0], p[1], p[2]);
+    want_o = exact.orient2d(p[0], p[1], p[2]);
+    e = k.incircle_staged(p[0], p[1], p[2], p[3]);
+    want_e = exact.incircle(p[0], p[1], p[2], p[3]);
+  }
+  w = own_walk(k, p);
+  RC_ASSERT(o.sign == want_o);
+  RC_ASSERT(o.stage <= 1);
+  RC_ASSERT(e.sign == want_e);
+  RC_ASSERT(e.stage <= 1);
+  RC_ASSERT(w.sign == reference(p));
+  if (want_e == Sign::zero) {
+    RC_ASSERT(e.stage == 1);
+    RC_ASSERT(w.stage == walked);
+  } else {
+    RC_ASSERT(w.stage == e.stage);
+  }
+}
+
 }  // namespace
+
+TEST_CASE("on small-integer grid points the integer stage answers as the integer determinant would",
+          "[integer][perturbed][rc]") {
+  // Cospherical (cocircular) small integers: the exact predicate's zero is
+  // the integer stage's, and every order is walked to GMP's perturbed sign.
+  for (const double r : {1.0, 3.0, 200.0}) {
+    const std::vector<Point3> s3 = sphere_points(r);
+    const std::vector<Point2> s2 = circle_points(r);
+    const IntegerKernel k3 = fitted<3>(s3), k2 = fitted<2>(s2);
+    const Staged z3 = k3.insphere_staged(s3[0], s3[1], s3[2], s3[3], s3[4]);
+    const Staged z2 = k2.incircle_staged(s2[0], s2[1], s2[2], s2[3]);
+    CHECK((z3.sign == Sign::zero && z3.stage == 1));
+    CHECK((z2.sign == Sign::zero && z2.stage == 1));
+    CHECK(check_all_orders<3>(s3) == 120);
+    CHECK(check_all_orders<2>(s2) == 24);
+  }
+  // A unimodular orientation (det -1) of 16-bit coordinates: past the static
+  // filter's bound, so the small-integer stage gives the nonzero sign.
+  const std::vector<Point3> u{{65535, 65534, 65535}, {65534, 65533, 65534}, {0, 0, 1}, {0, 0, 0}};
+  const Staged o = fitted<3>(u).orient3d_staged(u[0], u[1], u[2], u[3]);
+  CHECK(GmpKernel{}.orient3d(u[0], u[1], u[2], u[3]) == Sign::negative);
+  CHECK(o.sign == Sign::negative);
+  CHECK(o.stage == 1);
+}
+
+TEST_CASE("the integer kernel on 3D small-integer grid points answers as GMP, stage for stage",
+          "[integer][perturbed][rc]") {
+  rc::prop("3D: 5 points of {0..4}^3, translated", [] { small_integer_case<3>(); });
+}
+
+TEST_CASE("the integer kernel on 2D small-integer grid points answers as GMP, stage for stage",
+          "[integer][perturbed][rc]") {
+  rc::prop("2D: 4 points of {0..4}^2, translated", [] { small_integer_case<2>(); });
+}
 
 // (One property per test case: Catch runs the case once per rc::prop section.)
 TEST_CASE("the integer kernel's walk answers as perturbed<GMP> on 3D lattice subsets",
