@@ -12,11 +12,13 @@
 // ghost's finite facet.  With exact predicates the cavity is connected and
 // star-shaped from p.
 //
-// Every simplex read is first acquired from the guard
+// Every simplex that joins the cavity is first acquired from the guard
 // (algorithms/simplex_guard.hpp), which also keeps the stamps (and may keep
 // them in neighbour words: those are read through guard.code); a refusal ends
-// the search with false and leaves the mesh unchanged but for the stamps of
-// acquired simplices.
+// the search with false and leaves the mesh unchanged but for stamps.  The
+// simplices across the cavity's boundary are read and stamped without it: the
+// parallel algorithm's PartitionGuard lets a task read the neighbours of its
+// own simplices (simplex_guard.hpp says why no other task writes them).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -28,29 +30,23 @@
 
 namespace dlab {
 
-enum class Conflict : unsigned char { no, yes, refused };
-
 template <class K, int D, class Guard>
-Conflict in_conflict(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t t, const Point<D>& p,
-                     Guard& guard) {
+bool in_conflict(const K& k, const Mesh<D>& m, const Point<D>* pts, std::uint32_t t, const Point<D>& p,
+                 const Guard& guard) {
   const std::uint32_t* w = m.vertices(t);
-  bool c;
   if constexpr (D == 2) {
-    if (w[2] == kGhost)
-      c = ghost_conflict(k, pts[w[0]], pts[w[1]], p);
-    else
-      c = inside_pos(k, pts[w[0]], pts[w[1]], pts[w[2]], p) == Sign::positive;
+    if (w[2] == kGhost) return ghost_conflict(k, pts[w[0]], pts[w[1]], p);
+    return inside_pos(k, pts[w[0]], pts[w[1]], pts[w[2]], p) == Sign::positive;
   } else {
     if (w[3] == kGhost) {
+      // The finite simplex across the ghost's hull facet shares its three
+      // finite vertices, so it is no other task's (simplex_guard.hpp).
       const std::uint32_t enc = guard.code(m.neighbour(t, 3));
-      if (!guard.acquire(Mesh<3>::simplex_of(enc))) return Conflict::refused;
       const std::uint32_t d = m.vertex(Mesh<3>::simplex_of(enc), Mesh<3>::facet_of(enc));
-      c = ghost_conflict(k, pts[w[0]], pts[w[1]], pts[w[2]], pts[d], p);
-    } else {
-      c = inside_pos(k, pts[w[0]], pts[w[1]], pts[w[2]], pts[w[3]], p) == Sign::positive;
+      return ghost_conflict(k, pts[w[0]], pts[w[1]], pts[w[2]], pts[d], p);
     }
+    return inside_pos(k, pts[w[0]], pts[w[1]], pts[w[2]], pts[w[3]], p) == Sign::positive;
   }
-  return c ? Conflict::yes : Conflict::no;
 }
 
 // The cavity of point i (p = pts[i]) from `start` (in conflict with p and
@@ -63,7 +59,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
   const Point<D>& p = pts[i];
   cavity.clear();
   records.clear();
-  // When a simplex joins the cavity, its neighbours' blocks (and lock words)
+  // When a simplex joins the cavity, its neighbours' blocks (and mark words)
   // are requested from memory: the breadth-first queue reaches them a few
   // simplices later, so their cache misses overlap instead of following one
   // another.  Bowyer-Watson on uniform 3D 10^6 points: 9-11 % less wall time
@@ -87,13 +83,11 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
     for (int f = 0; f < V; ++f) {
       const std::uint32_t enc = guard.code(m.neighbour(s, f));
       const std::uint32_t t = Mesh<D>::simplex_of(enc);
-      if (!guard.acquire(t)) return false;
       const std::uint32_t mk = guard.mark(m, t);
       if (mk == in) continue;
       if (mk != out) {
-        const Conflict cf = in_conflict<K, D>(k, m, pts, t, p, guard);
-        if (cf == Conflict::refused) return false;
-        if (cf == Conflict::yes) {
+        if (in_conflict<K, D>(k, m, pts, t, p, guard)) {
+          if (!guard.acquire(t)) return false;
           guard.set_mark(m, t, in);
           cavity.push_back(t);
           prefetch_neighbours(t);
@@ -118,7 +112,7 @@ bool search_cavity(const K& k, Mesh<D>& m, const Point<D>* pts, std::uint32_t i,
 // counterclockwise triangle (v0, v1, v2) joins v[f+1] to v[f+2], so the edge
 // after f is f+1 (mod 3, kAfter).  The stack holds the cavity edges still to cross,
 // as neighbour codes (4s + f), the next one on top.  The guard as in
-// search_cavity (the parallel Bowyer–Watson's LockGuard; NoGuard compiles away).
+// search_cavity (the parallel Bowyer–Watson's PartitionGuard; NoGuard compiles away).
 template <class K, class Guard>
 bool search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_t i, std::uint32_t start,
                        std::uint32_t in, std::uint32_t out, std::vector<std::uint32_t>& cavity,
@@ -139,11 +133,11 @@ bool search_cavity_ccw(const K& k, Mesh<2>& m, const Point<2>* pts, std::uint32_
     const std::uint32_t e = edges[--top];
     const std::uint32_t enc = guard.code(m.neighbour_enc(e));
     const std::uint32_t t = Mesh<2>::simplex_of(enc);
-    if (!guard.acquire(t)) return false;
     const std::uint32_t mk = guard.mark(m, t);
     if (mk == in) continue;
     if (mk != out) {
-      if (in_conflict<K, 2>(k, m, pts, t, p, guard) == Conflict::yes) {
+      if (in_conflict<K, 2>(k, m, pts, t, p, guard)) {
+        if (!guard.acquire(t)) return false;
         guard.set_mark(m, t, in);
         cavity.push_back(t);
         const int j = Mesh<2>::facet_of(enc);

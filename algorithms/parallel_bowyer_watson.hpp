@@ -2,22 +2,27 @@
 //
 // The insertion is algorithms/bowyer_watson.hpp's (walk, cavity search,
 // re-star: the same functions), run by T workers at once on oneTBB
-// (tbb::task_arena, tbb::parallel_for) with the optimistic locking of Marot,
+// (tbb::task_arena, tbb::parallel_for) with the spatial partitions of Marot,
 // Pellerin, Remacle, "One machine, one minute, three billion tetrahedra",
 // IJNME 2019, section 4, re-derived:
-//  - every simplex a worker reads or writes is first locked
-//    (algorithms/simplex_guard.hpp: 8 bits of its mark word); a simplex locked by
-//    another worker makes the worker drop its locks and put the point back
-//    (nothing was written yet: writes happen only in the re-star, after the
-//    whole cavity, its boundary and the new slots are locked);
 //  - the points (in the driver's insertion order: BRIO rounds, each sorted along
-//    a Hilbert curve) are inserted in batches that double in size; a batch is
-//    cut into 8T contiguous runs of that order, which are regions of space, so
-//    workers rarely meet, taken by the threads as they come free; the points
-//    put back are retried the same way, and when few remain (or a round makes
-//    no progress) one worker inserts them alone;
+//    a Hilbert curve) are inserted in batches that double in size; each round
+//    of a batch cuts space into T boxes with equal shares of the round's points
+//    (kd-tree cuts at quantiles: T = c_1 c_2 ... pieces along the axes, the
+//    most along the widest; T = 2 is two slabs), and T tasks insert the points
+//    of their box, each in the order given;
+//  - a task may read and write only simplices whose vertices all lie in its
+//    box (algorithms/simplex_guard.hpp's PartitionGuard, which also says why
+//    two tasks then never write one word): no locks, no atomic
+//    read-modify-write; an insertion whose walk or cavity leaves the box is
+//    refused before anything is written, and the point waits for the next
+//    round, whose cuts start from the next axis; when few points remain (or D
+//    rounds make no progress) one worker inserts them alone;
+//  - each task starts walking from a simplex of its box, found between rounds
+//    by a walk of the calling thread to one of the task's points; a walk that
+//    leaves the box makes the next one start from its last simplex in it;
 //  - the first points are inserted by one worker alone, until the mesh is large
-//    enough for T regions;
+//    enough for T boxes;
 //  - each worker takes new slots from its own free list and from blocks of a
 //    reserve that the mesh grows between rounds, never during one.
 //
@@ -36,12 +41,15 @@
 // failure messages).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -63,9 +71,9 @@
 namespace dlab {
 
 // New slots for one worker: its own free list (slots its cavities gave up)
-// and blocks claimed from the mesh's reserve.  Each slot is acquired from the
-// worker's guard before it is handed out.  Presents the members of Mesh<D>
-// that Restar::star uses.
+// and blocks claimed from the mesh's reserve; no other task reads them (a dead
+// slot is nobody's neighbour).  Presents the members of Mesh<D> that
+// Restar::star uses.
 template <int D>
 class WorkerSlots {
  public:
@@ -73,10 +81,9 @@ class WorkerSlots {
 
   explicit WorkerSlots(Mesh<D>& m) : m_(m) {}
 
-  // Acquires n slots for the coming re-star.  False: the reserve ran out (the
-  // caller drops its locks, the point waits for the mesh to grow).
-  template <class Guard>
-  bool prepare(std::size_t n, Guard& guard, std::atomic<std::uint32_t>& reserve_next, std::uint32_t reserve_end) {
+  // Takes n slots for the coming re-star.  False: the reserve ran out (the
+  // point waits for the mesh to grow).
+  bool prepare(std::size_t n, std::atomic<std::uint32_t>& reserve_next, std::uint32_t reserve_end) {
     while (ready_.size() < n) {
       std::uint32_t s;
       if (!free_.empty()) {
@@ -94,21 +101,14 @@ class WorkerSlots {
         }
         s = block_next_++;
       }
-      if (guard.acquire(s))
-        ready_.push_back(s);
-      else
-        busy_.push_back(s);  // another worker's walk is looking at it: later
+      ready_.push_back(s);
     }
-    for (std::uint32_t s : busy_) free_.push_back(s);
-    busy_.clear();
     return true;
   }
   // After an abandoned insertion: the slots prepared and not used go back.
   void give_back() {
     for (std::uint32_t s : ready_) free_.push_back(s);
-    for (std::uint32_t s : busy_) free_.push_back(s);
     ready_.clear();
-    busy_.clear();
   }
   std::int64_t live_delta() const { return live_delta_; }
 
@@ -134,7 +134,7 @@ class WorkerSlots {
 
  private:
   Mesh<D>& m_;
-  std::vector<std::uint32_t> free_, ready_, busy_;
+  std::vector<std::uint32_t> free_, ready_;
   std::uint32_t block_next_ = 0, block_end_ = 0;
   std::int64_t live_delta_ = 0;
 };
@@ -160,7 +160,7 @@ class ParallelBowyerWatson {
   static constexpr int V = D + 1;
 
  public:
-  static constexpr unsigned kMaxThreads = 255;  // lock ids 1..255 (simplex_guard.hpp)
+  static constexpr unsigned kMaxThreads = 255;  // the command line's limit (variants/registry.cpp)
 
   explicit ParallelBowyerWatson(const K& k = K{}) : k_(k) {}
 
@@ -183,13 +183,12 @@ class ParallelBowyerWatson {
   enum class Status : unsigned char { inserted, deferred, failed };
 
   struct Worker {
-    Worker(const K& kernel, Mesh<D>& m, std::uint8_t owner)
-        : k(thread_kernel(kernel)), guard(MarkWords{}, owner), slots(m) {}
+    Worker(const K& kernel, Mesh<D>& m) : k(thread_kernel(kernel)), slots(m) {}
     K k;
-    LockGuard guard;
+    PartitionGuard<D> guard;  // the box of the task this worker runs
     WorkerSlots<D> slots;
     Restar<D> restar;
-    std::vector<std::uint32_t> cavity, deferred, edges;  // edges: search_cavity_ccw's stack (2D)
+    std::vector<std::uint32_t> cavity, edges;  // edges: search_cavity_ccw's stack (2D)
     std::vector<BoundaryRecord<D>> records;
     std::uint32_t last = 0;   // where the next walk starts
     std::uint32_t stamp = 0;  // this worker's stamps: stamp (in), stamp + 1 (out)
@@ -206,8 +205,8 @@ class ParallelBowyerWatson {
     std::atomic<std::uint32_t> handoff{0};
   };
 
-  // Guard: the worker's LockGuard in a parallel round; NoGuard when one
-  // worker runs alone (nobody to exclude: no locking costs).
+  // Guard: the worker's PartitionGuard in a parallel round; NoGuard (3D:
+  // TopBitMarks) when one worker runs alone (nobody to exclude).
   template <class Guard>
   Status insert(Worker& w, Guard& guard, std::uint32_t i, bool alone);
   template <class Guard>
@@ -218,9 +217,25 @@ class ParallelBowyerWatson {
   }
   template <class Guard>
   bool start_simplex(Worker& w, Guard& guard, std::uint32_t& start, bool alone);
+  // One task of a parallel round: the box, the simplex its walks start from
+  // (kNoStart: none found, every point waits) and its points.
+  static constexpr std::uint32_t kNoStart = 0xFFFFFFFFu;
+  struct Cell {
+    std::array<double, D> lo, hi;
+    std::uint32_t start = kNoStart;
+    std::vector<std::uint32_t> points, deferred;
+  };
+  std::vector<Cell> cut_into_cells(std::vector<std::uint32_t> points, const std::array<int, D>& axes) const;
+  std::uint32_t live_simplex();
+  void find_start(Cell& cell);
   void insert_alone(const std::vector<std::uint32_t>& points);
   void insert_batch(std::vector<std::uint32_t> points);
   void ensure_reserve(std::size_t slots);
+  // A guard's view of the mesh (again whenever the mesh grows).
+  void bind(PartitionGuard<D>& guard) {
+    guard.bind(mesh_, pts_);
+    if constexpr (D == 2) guard.bind_marks(mesh_.marks());
+  }
   void reset_stamps_if_needed(std::uint64_t insertions);
   // f(r) on the workers' threads for the subranges r of `range`, between two
   // steps of the calling thread.  oneTBB orders the two inside libtbb, where a
@@ -257,26 +272,25 @@ class ParallelBowyerWatson {
   // race detector that does not see inside oneTBB (ThreadSanitizer) sees them.
   std::atomic<std::uint32_t> round_started_{0}, workers_done_{0};
   std::uint64_t rounds_ = 0, alone_insertions_ = 0;
+  WalkRng rng_;  // find_start's walks
 };
 
-// A live simplex to start the walk from, locked: the worker's last one, or,
-// when another worker has since deleted it, the next live slot (alone: any
-// live slot).  False: none could be locked now; the search resumes there.
+// The simplex to start the walk from: the worker's last one, which in a
+// parallel round is one of its box's (set by find_start, then by its own
+// insertions: no other task deletes it).  Alone: it or, when it was deleted,
+// the next live slot.  False (a parallel round only): it is not the box's.
 template <class K, int D>
 template <class Guard>
 bool ParallelBowyerWatson<K, D>::start_simplex(Worker& w, Guard& guard, std::uint32_t& start, bool alone) {
+  if (!alone) {
+    start = w.last;
+    return w.last != kNoStart && guard.acquire(w.last);
+  }
   const std::uint32_t slots = mesh_.slots();
   std::uint32_t s = w.last < slots ? w.last : 0;
-  const std::uint32_t tries = alone ? slots : 64;
-  for (std::uint32_t t = 0; t < tries; ++t, s = s + 1 < slots ? s + 1 : 0) {
-    if (!guard.acquire(s)) break;
-    if (mesh_.alive(s)) {
-      start = s;
-      return true;
-    }
-  }
-  w.last = s;
-  return false;
+  for (std::uint32_t t = 0; t < slots && !mesh_.alive(s); ++t) s = s + 1 < slots ? s + 1 : 0;
+  start = s;
+  return true;
 }
 
 template <class K, int D>
@@ -290,7 +304,10 @@ typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(W
   const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
   const Located loc = visibility_walk<K, D>(w.k, mesh_, pts_, start, p, bound, w.rng, guard);
   w.walk_steps += loc.steps;
-  if (loc.end == Located::End::blocked) return abandon(w, guard);
+  if (loc.end == Located::End::blocked) {  // the next walk starts nearer
+    w.last = loc.simplex;
+    return abandon(w, guard);
+  }
   if (loc.end == Located::End::step_bound) {
     // Other workers may have changed the mesh under a long walk: only a walk
     // alone proves a bug.
@@ -311,18 +328,25 @@ typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(W
       }
     }
   }
-  const std::uint32_t step = 2 * threads_;
-  if (w.stamp + step + 1 > LockGuard::kStampLimit) return abandon(w, guard);  // the stamps are reset between rounds
-  w.stamp += step;
   bool searched;
-  if constexpr (D == 2)  // records in cycle order: Restar links them without a table
+  if constexpr (D == 2) {  // records in cycle order: Restar links them without a table
+    const std::uint32_t step = 2 * threads_;
+    if (std::uint64_t{w.stamp} + step + 1 > PartitionGuard<2>::kStampLimit) return abandon(w, guard);  // reset between rounds
+    w.stamp += step;
     searched = search_cavity_ccw<K>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records,
                                     w.edges, guard);
-  else
-    searched = search_cavity<K, D>(w.k, mesh_, pts_, i, loc.simplex, w.stamp, w.stamp + 1, w.cavity, w.records, guard);
-  if (!searched) return abandon(w, guard);
+  } else {  // the stamps are bits in the neighbour words: cleared before anything else reads them
+    constexpr std::uint32_t in = PartitionGuard<3>::kIn, out = PartitionGuard<3>::kOut;
+    searched = search_cavity<K, D>(w.k, mesh_, pts_, i, loc.simplex, in, out, w.cavity, w.records, guard);
+    for (std::uint32_t s : w.cavity) guard.unmark(mesh_, s, in);
+    for (const BoundaryRecord<D>& r : w.records) guard.unmark(mesh_, Mesh<D>::simplex_of(r.outside), out);
+  }
+  if (!searched) {
+    w.last = loc.simplex;
+    return abandon(w, guard);
+  }
   const std::size_t extra = w.records.size() > w.cavity.size() ? w.records.size() - w.cavity.size() : 0;
-  if (!w.slots.prepare(extra, guard, reserve_next_, reserve_end_)) return abandon(w, guard);
+  if (!w.slots.prepare(extra, reserve_next_, reserve_end_)) return abandon(w, guard);
 
   w.cavity_total += w.cavity.size();
   w.cavity_max = std::max<std::uint64_t>(w.cavity_max, w.cavity.size());
@@ -360,17 +384,18 @@ void ParallelBowyerWatson<K, D>::ensure_reserve(std::size_t slots) {
   mesh_.add_reserve(std::max<std::size_t>(slots, mesh_.slots() / 8), write);
   reserve_next_.store(next, std::memory_order_relaxed);
   reserve_end_ = mesh_.slots();
-  for (Worker& w : workers_) w.guard.rebind(mesh_.marks());
+  for (Worker& w : workers_) bind(w.guard);
 }
 
-// Stamps stay below LockGuard::kStampLimit (the mark word's top bits are the
-// lock): clear every mark, between rounds, when `insertions` more (about 2T
-// stamps each, shared by T workers) might not fit.
+// Stamps stay below PartitionGuard::kStampLimit: clear every mark, between
+// rounds, when `insertions` more (2T stamps each, all by one worker at worst)
+// might not fit.
 template <class K, int D>
 void ParallelBowyerWatson<K, D>::reset_stamps_if_needed(std::uint64_t insertions) {
-  const std::uint64_t need = 2 * (insertions + 64) + 2 * threads_;
+  if constexpr (D == 3) return;  // TopBitMarks: no stamps
+  const std::uint64_t need = 2ull * threads_ * (insertions + 64);
   bool reset = false;
-  for (const Worker& w : workers_) reset = reset || w.stamp + need > LockGuard::kStampLimit;
+  for (const Worker& w : workers_) reset = reset || w.stamp + need > PartitionGuard<2>::kStampLimit;
   if (!reset) return;
   for (std::uint32_t s = 0; s < mesh_.slots(); ++s) mesh_.set_mark(s, 0);
   for (std::size_t t = 0; t < workers_.size(); ++t) workers_[t].stamp = static_cast<std::uint32_t>(2 * t);
@@ -381,7 +406,7 @@ void ParallelBowyerWatson<K, D>::reset_stamps_if_needed(std::uint64_t insertions
 template <class K, int D>
 void ParallelBowyerWatson<K, D>::insert_alone(const std::vector<std::uint32_t>& points) {
   Worker& w = workers_[0];
-  NoGuard alone;
+  std::conditional_t<D == 3, TopBitMarks, NoGuard> alone;  // the stamps where the tasks keep them
   for (std::uint32_t i : points) {
     for (std::size_t room = 256;; room *= 4) {
       ensure_reserve(room);
@@ -404,12 +429,111 @@ void ParallelBowyerWatson<K, D>::insert_alone(const std::vector<std::uint32_t>& 
   }
 }
 
-// One batch: rounds of T workers on contiguous runs of `points`, then the
-// remainder alone.
+// T boxes with equal shares of `points`, each share in the order given: the
+// points are cut along axes[0] into c_0 slabs at their quantiles, each slab
+// along axes[1] into c_1, and so on, T = c_0 c_1 ... with c_0 >= c_1 >= ...
+// (T's prime factors, largest first, each to the axis with the fewest
+// pieces).  Equal coordinates go to one side of a cut, so a share may be empty.
+template <class K, int D>
+auto ParallelBowyerWatson<K, D>::cut_into_cells(std::vector<std::uint32_t> points,
+                                                const std::array<int, D>& axes) const -> std::vector<Cell> {
+  std::vector<std::size_t> primes;
+  std::size_t rest = threads_;
+  for (std::size_t p = 2; p * p <= rest;)
+    if (rest % p == 0)
+      primes.push_back(p), rest /= p;
+    else
+      ++p;
+  if (rest > 1) primes.push_back(rest);
+  std::array<std::size_t, D> pieces;
+  pieces.fill(1);
+  for (auto p = primes.rbegin(); p != primes.rend(); ++p)
+    *std::min_element(pieces.begin(), pieces.end()) *= *p;  // the first of the fewest: the widest
+  std::vector<Cell> cells(1);
+  cells[0].lo.fill(-std::numeric_limits<double>::infinity());
+  cells[0].hi.fill(std::numeric_limits<double>::infinity());
+  cells[0].points = std::move(points);
+  std::vector<double> x;
+  for (int level = 0; level < D; ++level) {
+    const int a = axes[level];
+    const std::size_t c = pieces[level];
+    if (c == 1) continue;
+    std::vector<Cell> finer;
+    for (Cell& cell : cells) {
+      const std::size_t first = finer.size();
+      finer.resize(first + c, Cell{cell.lo, cell.hi, kNoStart, {}, {}});
+      x.resize(cell.points.size());
+      for (std::size_t j = 0; j < x.size(); ++j) x[j] = pts_[cell.points[j]][a];
+      auto from = x.begin();
+      for (std::size_t t = 1; t < c; ++t) {
+        const auto q = x.begin() + static_cast<std::ptrdiff_t>(t * x.size() / c);
+        if (!x.empty()) std::nth_element(from, q, x.end());
+        // An empty cell stays whole in its first piece; the others are empty boxes.
+        finer[first + t - 1].hi[a] = finer[first + t].lo[a] = x.empty() ? cell.hi[a] : *q;
+        from = q;
+      }
+      for (std::uint32_t i : cell.points) {
+        std::size_t t = first;
+        while (t + 1 < first + c && pts_[i][a] >= finer[t].hi[a]) ++t;
+        finer[t].points.push_back(i);
+      }
+    }
+    cells.swap(finer);
+  }
+  return cells;
+}
+
+// A live simplex (between rounds): worker 0's last one, or the first live slot.
+template <class K, int D>
+std::uint32_t ParallelBowyerWatson<K, D>::live_simplex() {
+  for (const Worker& w : workers_)
+    if (w.last < mesh_.slots() && mesh_.alive(w.last)) return w.last;
+  std::uint32_t s = 0;
+  while (!mesh_.alive(s)) ++s;  // the mesh has live simplices
+  return s;
+}
+
+// Between rounds, on the calling thread: the simplex holding one of a few of
+// the box's points, if all its vertices are in the box (so no other task
+// deletes it), else kNoStart.  The middle point first: a box's first points in
+// Hilbert order are where the curve enters it, on its boundary.
+template <class K, int D>
+void ParallelBowyerWatson<K, D>::find_start(Cell& cell) {
+  PartitionGuard<D> guard;
+  bind(guard);
+  guard.set_box(cell.lo, cell.hi);
+  const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
+  cell.start = kNoStart;
+  std::uint32_t from = live_simplex();
+  const std::size_t m = cell.points.size();
+  for (std::size_t tries = 0, j = m / 2; tries < std::min<std::size_t>(8, m); ++tries, j = (j + m / 8 + 1) % m) {
+    const Located loc = visibility_walk<K, D>(k_, mesh_, pts_, from, pts_[cell.points[j]], bound, rng_);
+    if (loc.end == Located::End::step_bound) return;  // the alone insertions will report it
+    if (guard.acquire(loc.simplex)) {
+      cell.start = loc.simplex;
+      return;
+    }
+    from = loc.simplex;
+  }
+}
+
+// One batch: rounds of T tasks, one box each, then the remainder alone.
 template <class K, int D>
 void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points) {
   const std::size_t T = threads_;
-  while (!points.empty() && !failed_.load(std::memory_order_relaxed)) {
+  // The axes, widest extent of the batch first: round r cuts first along
+  // axes[r % D], then the next ones.
+  std::array<int, D> axes;
+  {
+    std::array<double, D> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (std::uint32_t i : points)
+      for (int a = 0; a < D; ++a) lo[a] = std::min(lo[a], pts_[i][a]), hi[a] = std::max(hi[a], pts_[i][a]);
+    for (int a = 0; a < D; ++a) axes[a] = a;
+    std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  }
+  for (std::size_t round = 0; !points.empty() && !failed_.load(std::memory_order_relaxed); ++round) {
     if (T == 1 || points.size() < 64 * T) {
       insert_alone(points);
       return;
@@ -419,37 +543,41 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
     // points to the next round.
     ensure_reserve(points.size() * (D == 3 ? 7 : 2) + T * 2 * WorkerSlots<D>::kBlock);
     reset_stamps_if_needed(points.size());
-    for (Worker& w : workers_) w.deferred.clear();
-    // 8 chunks a thread, contiguous runs of the order, taken by whichever
-    // thread is free (oneTBB's work stealing): a region that costs more does
-    // not leave the other threads waiting.  Each thread inserts with the
-    // worker of its arena slot.
-    const std::size_t chunks = std::min(points.size() / 64, 8 * T), per = (points.size() + chunks - 1) / chunks;
-    on_workers(tbb::blocked_range<std::size_t>(0, chunks, 1), tbb::simple_partitioner(),
+    std::array<int, D> order;
+    for (int a = 0; a < D; ++a) order[a] = axes[(round + a) % D];
+    std::vector<Cell> cells = cut_into_cells(points, order);
+    for (Cell& cell : cells) find_start(cell);
+    // One task a box, on whichever thread is free; each thread inserts with
+    // the worker of its arena slot.
+    on_workers(tbb::blocked_range<std::size_t>(0, T, 1), tbb::simple_partitioner(),
                [&](const tbb::blocked_range<std::size_t>& range) {
                  Worker& w = workers_[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
                  w.handoff.fetch_add(1, std::memory_order_acquire);
-                 const std::size_t lo = std::min(points.size(), range.begin() * per);
-                 const std::size_t hi = std::min(points.size(), range.end() * per);
-                 for (std::size_t j = lo; j < hi; ++j) {
-                   if (failed_.load(std::memory_order_relaxed)) {
-                     w.deferred.insert(w.deferred.end(), points.begin() + j, points.begin() + hi);
-                     break;
-                   }
-                   const Status st = insert(w, w.guard, points[j], false);
-                   if (st == Status::deferred) {
-                     w.deferred.push_back(points[j]);
-                     ++w.deferrals;
-                   } else if (st == Status::failed) {
-                     failed_.store(true, std::memory_order_relaxed);
+                 for (std::size_t t = range.begin(); t < range.end(); ++t) {
+                   Cell& cell = cells[t];
+                   w.guard.set_box(cell.lo, cell.hi);
+                   w.last = cell.start;
+                   for (std::size_t j = 0; j < cell.points.size(); ++j) {
+                     const std::uint32_t i = cell.points[j];
+                     if (failed_.load(std::memory_order_relaxed)) {
+                       cell.deferred.insert(cell.deferred.end(), cell.points.begin() + j, cell.points.end());
+                       break;
+                     }
+                     const Status st = insert(w, w.guard, i, false);
+                     if (st == Status::deferred) {
+                       cell.deferred.push_back(i);
+                       ++w.deferrals;
+                     } else if (st == Status::failed) {
+                       failed_.store(true, std::memory_order_relaxed);
+                     }
                    }
                  }
                  w.handoff.fetch_add(1, std::memory_order_release);
                });
     ++rounds_;
     std::vector<std::uint32_t> rest;
-    for (const Worker& w : workers_) rest.insert(rest.end(), w.deferred.begin(), w.deferred.end());
-    if (rest.size() == points.size()) {  // no progress: one worker does the rest
+    for (const Cell& cell : cells) rest.insert(rest.end(), cell.deferred.begin(), cell.deferred.end());
+    if (rest.size() == points.size() && round + 1 >= D) {  // no progress along any axis: one worker does the rest
       insert_alone(rest);
       return;
     }
@@ -462,6 +590,10 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   TriangulationResult res;
   pts_ = pts.data();
   const std::size_t n = pts.size();
+  if constexpr (D == 3) {  // PartitionGuard<3> keeps its stamps in the neighbour words
+    mesh_.without_marks();
+    mesh_.limit_slots(TopBitMarks::kMaxSlots);
+  }
   const std::optional<IncrementalStart<D>> first = start_incremental_mesh<D>(k_, pts, mesh_, res);
   if (!first) return res;
   merged_.assign(n, kNotProcessed);
@@ -481,8 +613,8 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   tbb::global_control threads_allowed(tbb::global_control::max_allowed_parallelism, threads_);
   if (threads_ > 1 && !arena_.is_active()) arena_.initialize(static_cast<int>(threads_));
   for (unsigned t = 0; t < threads_; ++t) {
-    workers_.emplace_back(k_, mesh_, static_cast<std::uint8_t>(t + 1));
-    workers_.back().guard.rebind(mesh_.marks());
+    workers_.emplace_back(k_, mesh_);
+    bind(workers_.back().guard);
     workers_.back().last = first->simplex;
     workers_.back().stamp = 2 * t;
   }

@@ -16,27 +16,38 @@
 //    mesh.  The serial 3D Bowyer–Watson's: no mark array at all (session 19's
 //    byte per slot cost 6.75 bytes per point; a 4-byte stamp 27), and a mark
 //    is read from the cache line the simplex's vertices are on.
-//  - LockGuard: the parallel Bowyer–Watson's (algorithms/parallel_bowyer_watson.hpp)
-//    per-simplex locks, kept in the mesh's mark word itself: its top 8 bits
-//    hold 0 (free) or the owner's id (1..255), its low 24 bits the stamp, so
-//    that taking a simplex touches no cache line the serial search would not
-//    (a separate lock array cost a third line per simplex visited).  A worker
-//    takes each simplex it reads or writes with one compare-and-swap (acquire)
-//    and lets all of them go when its insertion ends or is abandoned
-//    (release): every read and write of a simplex's vertices and neighbours
-//    happens under its lock, so those arrays need no atomics; the mark words,
-//    which other workers test, are only accessed atomically.  A simplex held
-//    by another worker is a refusal, never a wait, so there is no deadlock; the
-//    worker drops its locks and retries the point later (the optimistic scheme
-//    of Marot, Pellerin, Remacle, "One machine, one minute, three billion
-//    tetrahedra", IJNME 2019, section 4).  Stamps must stay below 2^24
-//    (kStampLimit): the parallel algorithm clears the marks before that.
+//  - PartitionGuard: the parallel Bowyer–Watson's
+//    (algorithms/parallel_bowyer_watson.hpp). Space is cut into boxes, one a
+//    task; a vertex belongs to the box its point lies in (the vertex at
+//    infinity to every box), and a task may read or write only a simplex
+//    whose vertices are all in its box (acquire; HXT's rule, Marot, Pellerin,
+//    Remacle, "One machine, one minute, three billion tetrahedra", IJNME
+//    2019, section 4). A refusal ends the insertion before anything is
+//    written, and the point is retried in a later round, cut another way.
+//    Taking a simplex is a few loads and compares: no atomic
+//    read-modify-write, no lock word, nothing to release (the per-simplex
+//    compare-and-swap locks used here before cost the two-thread run 1.7
+//    times the serial CPU time, papers/triangulation_costs.md, session 43).
+//    Why two tasks never touch one simplex: a task writes its own simplices
+//    (its cavity, new slots) and the neighbour words of the simplices across
+//    its cavity's boundary, and reads its own simplices and their neighbours.
+//    Two simplices that share a facet share its finite vertices, d of them,
+//    or d - 1 >= 1 with the vertex at infinity; a vertex lies in one box
+//    only, so a simplex one task owns is nobody else's, nor a neighbour of
+//    anybody else's. The one simplex that two tasks may both reach is, in 2D,
+//    a ghost (a, b, infinity) with a and b in two boxes, across the facets
+//    {a, infinity} and {b, infinity}: it is owned by neither (never written
+//    but for those two different neighbour words) and its mark word, which
+//    both may stamp, is only accessed atomically. In 3D the stamps are
+//    TopBitMarks' bits.
 #pragma once
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <vector>
 
 #include "algorithms/mesh.hpp"
+#include "predicates/point.hpp"
 
 namespace dlab {
 
@@ -86,63 +97,79 @@ class TopBitMarks {
   }
 };
 
-class LockGuard {
+// Which simplices a task of the parallel Bowyer–Watson may read and write
+// (PartitionGuard, in the header comment).
+template <int D>
+class BoxOwnership {
  public:
-  static constexpr int kOwnerShift = 24;
-  static constexpr std::uint32_t kStampLimit = (1u << kOwnerShift) - 1;
+  // The mesh and the points (again when the mesh grows: between rounds).
+  void bind(const Mesh<D>& mesh, const Point<D>* pts) {
+    mesh_ = &mesh;
+    pts_ = pts;
+  }
+  // The box lo[a] <= x[a] < hi[a] on every axis a (+-inf where it is open).
+  void set_box(const std::array<double, D>& lo, const std::array<double, D>& hi) {
+    lo_ = lo;
+    hi_ = hi;
+  }
+  bool owns_point(const Point<D>& q) const {
+    bool in = true;
+    for (int a = 0; a < D; ++a) in &= (q[a] >= lo_[a]) & (q[a] < hi_[a]);
+    return in;
+  }
+  bool owns_vertex(std::uint32_t v) const { return v == kGhost || owns_point(pts_[v]); }
 
+  // True when every vertex of s is in the box.  Inlined: a task asks for
+  // every simplex it enters.
+  [[gnu::always_inline]] bool acquire(std::uint32_t s) const {
+    const std::uint32_t* w = mesh_->vertices(s);
+    bool own = true;
+#pragma GCC unroll 4
+    for (int j = 0; j <= D; ++j) own &= owns_vertex(w[j]);
+    return own;
+  }
+  static constexpr void prefetch(std::uint32_t) {}  // nothing beside the block
+  static constexpr void release_all() {}             // nothing taken
+
+ private:
+  const Mesh<D>* mesh_ = nullptr;
+  const Point<D>* pts_ = nullptr;
+  std::array<double, D> lo_{}, hi_{};
+};
+
+template <int D>
+class PartitionGuard;
+
+// 2D: stamps in the block's mark word, accessed atomically (the ghost that two
+// tasks may both stamp).
+template <>
+class PartitionGuard<2> : public BoxOwnership<2> {
+ public:
+  static constexpr std::uint32_t kStampLimit = 0xFFFFFFFFu;  // the whole word
   static constexpr std::uint32_t code(std::uint32_t word) { return word; }
-
-  LockGuard(MarkWords marks, std::uint8_t owner) : words_(marks), owner_(std::uint32_t(owner) << kOwnerShift) {}
-
-  // True when s is held by this guard now (taken now or earlier).  Inlined:
-  // a worker asks for every simplex it reads.
-  [[gnu::always_inline]] bool acquire(std::uint32_t s) {
-    std::atomic_ref<std::uint32_t> word(words_[s]);
-    std::uint32_t v = word.load(std::memory_order_relaxed);
-    const std::uint32_t holder = v & ~kStampLimit;
-    if (holder == owner_) return true;  // only this owner ever writes its own id
-    if (holder != 0 ||
-        !word.compare_exchange_strong(v, v | owner_, std::memory_order_acquire, std::memory_order_relaxed))
-      return false;
-    if (held_count_ == held_.size()) held_.resize(2 * held_.size() + 64);  // rare: amortised
-    held_[held_count_++] = s;
-    return true;
+  void bind_marks(MarkWords marks) { words_ = marks; }
+  std::uint32_t mark(const Mesh<2>&, std::uint32_t s) const {
+    return std::atomic_ref<std::uint32_t>(words_[s]).load(std::memory_order_relaxed);
   }
-
-  // A hint only (no read): the search asks for a simplex's lock word before it
-  // takes it, as for its block.  always_inline: g++ 12 deletes calls to a
-  // function that only prefetches (papers/triangulation_costs.md, session 38).
-  [[gnu::always_inline]] void prefetch(std::uint32_t s) const { __builtin_prefetch(&words_[s]); }
-
-  // The stamp of a held simplex.
-  template <class M>
-  std::uint32_t mark(const M&, std::uint32_t s) const {
-    return std::atomic_ref<std::uint32_t>(words_[s]).load(std::memory_order_relaxed) & kStampLimit;
+  void set_mark(Mesh<2>&, std::uint32_t s, std::uint32_t stamp) {
+    std::atomic_ref<std::uint32_t>(words_[s]).store(stamp, std::memory_order_relaxed);
   }
-  template <class M>
-  void set_mark(M&, std::uint32_t s, std::uint32_t stamp) {
-    std::atomic_ref<std::uint32_t>(words_[s]).store(owner_ | stamp, std::memory_order_relaxed);
-  }
-
-  // Lets every held simplex go, keeping its stamp; the writes made under the
-  // locks become visible to the next owner (release).
-  void release_all() {
-    for (std::size_t i = 0; i < held_count_; ++i) {
-      std::atomic_ref<std::uint32_t> word(words_[held_[i]]);
-      word.store(word.load(std::memory_order_relaxed) & kStampLimit, std::memory_order_release);
-    }
-    held_count_ = 0;
-  }
-
-  // The mark words move when the mesh grows (between parallel rounds).
-  void rebind(MarkWords marks) { words_ = marks; }
 
  private:
   MarkWords words_;
-  std::uint32_t owner_;              // owner id << kOwnerShift
-  std::vector<std::uint32_t> held_;  // the first held_count_ entries
-  std::size_t held_count_ = 0;
+};
+
+// 3D: TopBitMarks' two bits in the simplex's own neighbour words, which only
+// the task that stamps them reads (no simplex is two tasks' in 3D); the task
+// clears them after each search, as the serial algorithm does.
+template <>
+class PartitionGuard<3> : public BoxOwnership<3> {
+ public:
+  static constexpr std::uint32_t kIn = TopBitMarks::kIn, kOut = TopBitMarks::kOut;
+  static constexpr std::uint32_t code(std::uint32_t word) { return TopBitMarks::code(word); }
+  static std::uint32_t mark(const Mesh<3>& m, std::uint32_t s) { return TopBitMarks::mark(m, s); }
+  static void set_mark(Mesh<3>& m, std::uint32_t s, std::uint32_t stamp) { TopBitMarks::set_mark(m, s, stamp); }
+  static void unmark(Mesh<3>& m, std::uint32_t s, std::uint32_t stamp) { TopBitMarks::unmark(m, s, stamp); }
 };
 
 }  // namespace dlab

@@ -15,6 +15,7 @@
 #include "algorithms/bowyer_watson.hpp"
 #include "algorithms/huge_pages.hpp"
 #include "algorithms/lawson.hpp"
+#include "algorithms/parallel_bowyer_watson.hpp"
 #include "algorithms/simplex_guard.hpp"
 #include "fuzz/generators.hpp"
 #include "predicates/adaptive_kernel.hpp"
@@ -82,11 +83,11 @@ void check_marks(std::size_t n) {
   bool all_read_back = true;
   for (std::uint32_t s = 0; s < m.slots(); ++s) all_read_back = all_read_back && m.mark(s) == (0xA5000000u ^ s);
   CHECK(all_read_back);
-  // The LockGuard's view of the same words.
+  // PartitionGuard<2>'s view of the same words (algorithms/simplex_guard.hpp).
   const MarkWords words = m.marks();
   CHECK(words[m.slots() - 1] == (0xA5000000u ^ (m.slots() - 1)));
   // Slots added at the end (create's path too, once the free list is empty)
-  // start with mark 0, below every stamp and lock.
+  // start with mark 0, below every stamp.
   const std::uint32_t first = m.add_reserve(3);
   for (std::uint32_t s = first; s < first + 3; ++s) CHECK(m.mark(s) == 0);
 }
@@ -187,11 +188,16 @@ TEST_CASE("mesh: growing past the slot limit throws instead of wrapping", "[mesh
 // The serial 3D Bowyer–Watson and 3D Lawson keep their marks in the neighbour
 // codes' top bit (TopBitMarks), so their meshes must stop below 2^29 slots;
 // 2D's go on to the codes' own limit.
-TEST_CASE("mesh: the serial 3D Bowyer-Watson's and Lawson's meshes stop where their marks need", "[mesh]") {
+TEST_CASE("mesh: the 3D Bowyer-Watson's (serial, parallel) and Lawson's meshes stop where their marks need", "[mesh]") {
   BowyerWatson<perturbed<AdaptiveKernel>, 3> bw3;
   const std::vector<Point<3>> p3 = gen::uniform<3>(50, 3);
   REQUIRE(bw3.run(std::span<const Point<3>>(p3)).outcome == RunResult::Outcome::ok);
   CHECK(bw3.mesh().max_slots() == TopBitMarks::kMaxSlots);
+  ParallelBowyerWatson<perturbed<AdaptiveKernel>, 3> pbw3;  // PartitionGuard<3>: TopBitMarks' bits
+  pbw3.set_threads(2);
+  pbw3.keep_mesh();
+  REQUIRE(pbw3.run(std::span<const Point<3>>(p3)).outcome == RunResult::Outcome::ok);
+  CHECK(pbw3.mesh().max_slots() == TopBitMarks::kMaxSlots);
   CHECK(Mesh<3>::encode(TopBitMarks::kMaxSlots - 1, 3) < TopBitMarks::kBit);
   CHECK(Mesh<3>::encode(TopBitMarks::kMaxSlots, 0) >= TopBitMarks::kBit);  // one slot more would collide
   BowyerWatson<perturbed<AdaptiveKernel>, 2> bw2;

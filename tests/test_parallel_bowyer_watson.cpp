@@ -7,17 +7,21 @@
 //
 // Header-only on purpose (no dlab_core): .ci/run compiles this file alone
 // under ThreadSanitizer (executable dlab_parallel_tests, -DDLAB_TSAN=ON), and
-// a race in the workers' locking is a report there.
+// a race between the workers (two slabs writing one word) is a report there.
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
+#include <limits>
 #include <random>
 #include <rapidcheck.h>
 #include <rapidcheck/catch.h>
+#include <utility>
 #include <vector>
 
 #include "algorithms/bowyer_watson.hpp"
 #include "algorithms/canonical_simplices.hpp"
 #include "algorithms/parallel_bowyer_watson.hpp"
+#include "algorithms/simplex_guard.hpp"
 #include "algorithms/validate.hpp"
 #include "predicates/adaptive_kernel.hpp"
 #include "predicates/counted.hpp"
@@ -148,4 +152,123 @@ TEST_CASE("parallel bowyer-watson: random small sets, 2 and 5 threads", "[parall
                                            seed, totals);
     RC_ASSERT(totals.rounds > 0);
   });
+}
+
+namespace {
+
+// Boxes that tile space: `across` slabs along axis a cut at the points'
+// quantiles, each cut into `down` along axis b at its own points' quantiles
+// (as the rounds cut), so that points lie on the cuts.
+template <int D>
+std::vector<std::pair<std::array<double, D>, std::array<double, D>>> kd_boxes(const std::vector<Point<D>>& pts, int a,
+                                                                               unsigned across, int b, unsigned down) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  auto cuts = [&](std::vector<double> x, unsigned n) {
+    std::sort(x.begin(), x.end());
+    std::vector<double> c{-inf};
+    for (unsigned t = 1; t < n; ++t) c.push_back(x[t * x.size() / n]);
+    c.push_back(inf);
+    return c;
+  };
+  std::vector<double> xa;
+  for (const Point<D>& p : pts) xa.push_back(p[a]);
+  const std::vector<double> ca = cuts(xa, across);
+  std::vector<std::pair<std::array<double, D>, std::array<double, D>>> boxes;
+  for (unsigned i = 0; i < across; ++i) {
+    std::vector<double> xb;
+    for (const Point<D>& p : pts)
+      if (p[a] >= ca[i] && p[a] < ca[i + 1]) xb.push_back(p[b]);
+    const std::vector<double> cb = cuts(xb, down);
+    for (unsigned j = 0; j < down; ++j) {
+      std::array<double, D> lo, hi;
+      lo.fill(-inf);
+      hi.fill(inf);
+      lo[a] = ca[i], hi[a] = ca[i + 1];
+      lo[b] = cb[j], hi[b] = cb[j + 1];
+      boxes.push_back({lo, hi});
+    }
+  }
+  return boxes;
+}
+
+// The promise the parallel rounds rest on (algorithms/simplex_guard.hpp,
+// PartitionGuard): with space cut into boxes, every point is in one box, no
+// simplex is owned by two boxes, two simplices owned by different boxes are
+// never neighbours, and a simplex next to simplices of two boxes (which both
+// tasks may read and stamp) is a 2D ghost owned by neither, reached through
+// two different facets (so the two tasks write different neighbour words).
+template <int D>
+void check_boxes_never_share(const std::vector<Point<D>>& pts, int a, unsigned across, int b, unsigned down) {
+  ParallelBowyerWatson<Adaptive, D> par;
+  par.set_threads(1);
+  par.keep_mesh();
+  REQUIRE(par.run(std::span<const Point<D>>(pts)).outcome == RunOutcome::ok);
+  const Mesh<D>& m = par.mesh();
+  std::vector<PartitionGuard<D>> boxes;
+  for (const auto& [lo, hi] : kd_boxes<D>(pts, a, across, b, down)) {
+    boxes.emplace_back();
+    boxes.back().bind(m, pts.data());
+    boxes.back().set_box(lo, hi);
+  }
+  const std::size_t T = boxes.size();
+  INFO(T << " boxes, axes " << a << " and " << b << ", " << pts.size() << " points in " << D << "D");
+  bool one_box_each = true;
+  for (const Point<D>& p : pts) {
+    unsigned n = 0;
+    for (const PartitionGuard<D>& g : boxes) n += g.owns_point(p) ? 1 : 0;
+    one_box_each = one_box_each && n == 1;
+  }
+  CHECK(one_box_each);
+  constexpr int kNobody = -1;
+  std::vector<int> owner(m.slots(), kNobody);
+  std::vector<unsigned> owned(T, 0);
+  bool one_owner = true;
+  for (std::uint32_t s = 0; s < m.slots(); ++s) {
+    if (!m.alive(s)) continue;
+    for (std::size_t t = 0; t < T; ++t)
+      if (boxes[t].acquire(s)) {
+        one_owner = one_owner && owner[s] == kNobody;
+        owner[s] = static_cast<int>(t);
+        ++owned[t];
+      }
+  }
+  CHECK(one_owner);
+  // Else the test proves nothing (a box one lattice layer thick owns no tetrahedron).
+  CHECK(std::count_if(owned.begin(), owned.end(), [](unsigned n) { return n > 0; }) >= 2);
+  // reached[s]: the (box, facet of s) of each owned neighbour of s.
+  std::vector<std::vector<std::pair<int, int>>> reached(m.slots());
+  bool owned_neighbours_share_box = true;
+  for (std::uint32_t s = 0; s < m.slots(); ++s) {
+    if (!m.alive(s) || owner[s] == kNobody) continue;
+    for (int f = 0; f <= D; ++f) {
+      const std::uint32_t enc = m.neighbour(s, f);
+      const std::uint32_t n = Mesh<D>::simplex_of(enc);
+      if (owner[n] != kNobody) owned_neighbours_share_box = owned_neighbours_share_box && owner[n] == owner[s];
+      reached[n].push_back({owner[s], Mesh<D>::facet_of(enc)});
+    }
+  }
+  CHECK(owned_neighbours_share_box);
+  bool shared_only_as_2d_ghosts = true;
+  for (std::uint32_t s = 0; s < m.slots(); ++s)
+    for (const auto& [t, f] : reached[s])
+      for (const auto& [u, g] : reached[s])
+        if (t != u && !(D == 2 && owner[s] == kNobody && m.is_ghost(s) && f != g)) shared_only_as_2d_ghosts = false;
+  CHECK(shared_only_as_2d_ghosts);
+}
+
+}  // namespace
+
+// Would catch: a vertex on a cut counted in two boxes (a closed interval), an
+// ownership test that skips a vertex or an axis, or a 3D simplex two boxes can
+// both reach.
+TEST_CASE("parallel bowyer-watson: boxes never share a simplex they write", "[parallel_bowyer_watson]") {
+  std::mt19937_64 rng(20261207);
+  for (auto [across, down] : {std::pair{2u, 1u}, std::pair{7u, 1u}, std::pair{2u, 2u}, std::pair{3u, 2u}})
+    for (int a = 0; a < 2; ++a) {
+      const int b = 1 - a;
+      check_boxes_never_share<2>(uniform<2>(rng, 3000), a, across, b, down);
+      check_boxes_never_share<2>(lattice_with_duplicates<2>(rng, 2000, 25), a, across, b, down);
+      check_boxes_never_share<3>(uniform<3>(rng, 2000), a, across, 2, down);
+      check_boxes_never_share<3>(lattice_with_duplicates<3>(rng, 2000, 9), 2, across, a, down);
+    }
 }
