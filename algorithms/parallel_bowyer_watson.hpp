@@ -293,9 +293,13 @@ bool ParallelBowyerWatson<K, D>::start_simplex(Worker& w, Guard& guard, std::uin
   return true;
 }
 
+// Flattened: g++ 12 left the search, the conflict test and the in-sphere
+// filter out of line here (inline in the serial insert); with them inline the
+// two-thread run of 10^5 uniform 3D points executes 2 723 M -> 2 508 M
+// instructions (callgrind, whole process; serial 2 050 M).
 template <class K, int D>
 template <class Guard>
-typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(Worker& w, Guard& guard,
+[[gnu::flatten]] typename ParallelBowyerWatson<K, D>::Status ParallelBowyerWatson<K, D>::insert(Worker& w, Guard& guard,
                                                                                std::uint32_t i, bool alone) {
   const Point<D>& p = pts_[i];
   std::uint32_t start = 0;
