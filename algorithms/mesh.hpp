@@ -173,8 +173,8 @@ class Mesh {
       return mark_[s];
   }
   void set_mark(std::uint32_t s, std::uint32_t m) { marks()[s] = m; }
-  // The mark words themselves (algorithms/simplex_guard.hpp's LockGuard keeps
-  // its locks there); valid until the mesh grows.
+  // The mark words themselves (algorithms/simplex_guard.hpp's PartitionGuard<2>
+  // reads and writes them atomically); valid until the mesh grows.
   MarkWords marks() {
     if constexpr (kMarkInBlock)
       return {d_.data() + kMarkWord, S};

@@ -7,10 +7,11 @@
 // IJNME 2019, section 4, re-derived:
 //  - the points (in the driver's insertion order: BRIO rounds, each sorted along
 //    a Hilbert curve) are inserted in batches that double in size; each round
-//    of a batch cuts space into T boxes with equal shares of the round's points
-//    (kd-tree cuts at quantiles: T = c_1 c_2 ... pieces along the axes, the
-//    most along the widest; T = 2 is two slabs), and T tasks insert the points
-//    of their box, each in the order given;
+//    of a batch cuts space into B <= T boxes with equal shares of the round's
+//    points (kd-tree cuts at quantiles: B = c_1 c_2 ... pieces along the axes,
+//    the most along the widest; B = 2 is two slabs; B grows with the mesh, as
+//    small boxes defer most of their points), and B tasks insert the points of
+//    their box, each in the order given;
 //  - a task may read and write only simplices whose vertices all lie in its
 //    box (algorithms/simplex_guard.hpp's PartitionGuard, which also says why
 //    two tasks then never write one word): no locks, no atomic
@@ -168,6 +169,9 @@ class ParallelBowyerWatson {
   static constexpr bool kernel_sees_given_points_only = true;
 
   void set_threads(unsigned t) { threads_ = std::clamp(t, 1u, kMaxThreads); }
+  // Each box of a round gets at least this many of the mesh's vertices (see
+  // insert_batch); tests lower it to run many boxes on small inputs.
+  void set_vertices_per_box(std::size_t v) { vertices_per_box_ = std::max<std::size_t>(v, 1); }
 
   // Triangulates pts (in the order given, T workers at once).  pts must
   // outlive the call.
@@ -225,11 +229,13 @@ class ParallelBowyerWatson {
     std::uint32_t start = kNoStart;
     std::vector<std::uint32_t> points, deferred;
   };
-  std::vector<Cell> cut_into_cells(std::vector<std::uint32_t> points, const std::array<int, D>& axes) const;
+  std::vector<Cell> cut_into_cells(std::vector<std::uint32_t> points, const std::array<int, D>& axes,
+                                   std::size_t boxes) const;
   std::uint32_t live_simplex();
   void find_start(Cell& cell);
   void insert_alone(const std::vector<std::uint32_t>& points);
-  void insert_batch(std::vector<std::uint32_t> points);
+  // `points` after `before` points: a batch of rounds.
+  void insert_batch(std::vector<std::uint32_t> points, std::size_t before);
   void ensure_reserve(std::size_t slots);
   // A guard's view of the mesh (again whenever the mesh grows).
   void bind(PartitionGuard<D>& guard) {
@@ -261,6 +267,9 @@ class ParallelBowyerWatson {
   Mesh<D> mesh_;
   const Point<D>* pts_ = nullptr;
   unsigned threads_ = 1;
+  // 3D boxes of 2^18 vertices defer up to about 0.45 a point, 2D boxes of 2^17
+  // about 0.25 (session 43's curves at 10^6 points).
+  std::size_t vertices_per_box_ = D == 3 ? 1u << 18 : 1u << 17;
   bool keep_mesh_ = false;
   std::deque<Worker> workers_;  // never moved
   tbb::task_arena arena_;
@@ -271,7 +280,7 @@ class ParallelBowyerWatson {
   // Explicit happens-before edges around each parallel round, so that a
   // race detector that does not see inside oneTBB (ThreadSanitizer) sees them.
   std::atomic<std::uint32_t> round_started_{0}, workers_done_{0};
-  std::uint64_t rounds_ = 0, alone_insertions_ = 0;
+  std::uint64_t rounds_ = 0, boxes_max_ = 0, alone_insertions_ = 0;
   WalkRng rng_;  // find_start's walks
 };
 
@@ -433,16 +442,16 @@ void ParallelBowyerWatson<K, D>::insert_alone(const std::vector<std::uint32_t>& 
   }
 }
 
-// T boxes with equal shares of `points`, each share in the order given: the
+// B boxes with equal shares of `points`, each share in the order given: the
 // points are cut along axes[0] into c_0 slabs at their quantiles, each slab
-// along axes[1] into c_1, and so on, T = c_0 c_1 ... with c_0 >= c_1 >= ...
-// (T's prime factors, largest first, each to the axis with the fewest
+// along axes[1] into c_1, and so on, B = c_0 c_1 ... with c_0 >= c_1 >= ...
+// (B's prime factors, largest first, each to the axis with the fewest
 // pieces).  Equal coordinates go to one side of a cut, so a share may be empty.
 template <class K, int D>
-auto ParallelBowyerWatson<K, D>::cut_into_cells(std::vector<std::uint32_t> points,
-                                                const std::array<int, D>& axes) const -> std::vector<Cell> {
+auto ParallelBowyerWatson<K, D>::cut_into_cells(std::vector<std::uint32_t> points, const std::array<int, D>& axes,
+                                                std::size_t boxes) const -> std::vector<Cell> {
   std::vector<std::size_t> primes;
-  std::size_t rest = threads_;
+  std::size_t rest = boxes;
   for (std::size_t p = 2; p * p <= rest;)
     if (rest % p == 0)
       primes.push_back(p), rest /= p;
@@ -487,13 +496,14 @@ auto ParallelBowyerWatson<K, D>::cut_into_cells(std::vector<std::uint32_t> point
   return cells;
 }
 
-// A live simplex (between rounds): worker 0's last one, or the first live slot.
+// A live simplex (between rounds): a worker's last one, or the first live slot
+// (the mesh always has one).
 template <class K, int D>
 std::uint32_t ParallelBowyerWatson<K, D>::live_simplex() {
   for (const Worker& w : workers_)
     if (w.last < mesh_.slots() && mesh_.alive(w.last)) return w.last;
   std::uint32_t s = 0;
-  while (!mesh_.alive(s)) ++s;  // the mesh has live simplices
+  while (s + 1 < mesh_.slots() && !mesh_.alive(s)) ++s;
   return s;
 }
 
@@ -521,10 +531,17 @@ void ParallelBowyerWatson<K, D>::find_start(Cell& cell) {
   }
 }
 
-// One batch: rounds of T tasks, one box each, then the remainder alone.
+// One batch: rounds of up to T tasks, one box each, then the remainder alone.
+// A point is deferred when its walk or cavity meets a box's side, within a
+// few point spacings of it, so small boxes defer most of their points (3D, 10^6
+// uniform points, T boxes of the whole mesh: 0.09 deferrals a point at T = 2,
+// 0.45 at T = 4, 3.3 at T = 16; papers/triangulation_costs.md, session 43):
+// each box gets at least vertices_per_box_ of the mesh's vertices, two boxes
+// at least, and the threads beyond that wait.
 template <class K, int D>
-void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points) {
+void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points, std::size_t before) {
   const std::size_t T = threads_;
+  const std::size_t boxes = std::min(T, std::max<std::size_t>(2, before / vertices_per_box_));
   // The axes, widest extent of the batch first: round r cuts first along
   // axes[r % D], then the next ones.
   std::array<int, D> axes;
@@ -549,11 +566,11 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
     reset_stamps_if_needed(points.size());
     std::array<int, D> order;
     for (int a = 0; a < D; ++a) order[a] = axes[(round + a) % D];
-    std::vector<Cell> cells = cut_into_cells(points, order);
+    std::vector<Cell> cells = cut_into_cells(points, order, boxes);
     for (Cell& cell : cells) find_start(cell);
     // One task a box, on whichever thread is free; each thread inserts with
     // the worker of its arena slot.
-    on_workers(tbb::blocked_range<std::size_t>(0, T, 1), tbb::simple_partitioner(),
+    on_workers(tbb::blocked_range<std::size_t>(0, cells.size(), 1), tbb::simple_partitioner(),
                [&](const tbb::blocked_range<std::size_t>& range) {
                  Worker& w = workers_[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
                  w.handoff.fetch_add(1, std::memory_order_acquire);
@@ -579,6 +596,7 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points)
                  w.handoff.fetch_add(1, std::memory_order_release);
                });
     ++rounds_;
+    boxes_max_ = std::max<std::uint64_t>(boxes_max_, cells.size());
     std::vector<std::uint32_t> rest;
     for (const Cell& cell : cells) rest.insert(rest.end(), cell.deferred.begin(), cell.deferred.end());
     if (rest.size() == points.size() && round + 1 >= D) {  // no progress along any axis: one worker does the rest
@@ -632,7 +650,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   insert_alone(std::vector<std::uint32_t>(order.begin(), order.begin() + pos));
   while (pos < order.size() && !failed_.load(std::memory_order_relaxed)) {
     const std::size_t end = std::min(order.size(), 2 * pos);
-    insert_batch(std::vector<std::uint32_t>(order.begin() + pos, order.begin() + end));
+    insert_batch(std::vector<std::uint32_t>(order.begin() + pos, order.begin() + end), pos);
     pos = end;
   }
 
@@ -673,6 +691,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
       {"mesh_bytes_reserved", mesh_.bytes_reserved() + restar_bytes},
       {"threads", threads_},
       {"parallel_rounds", rounds_},
+      {"parallel_boxes_max", boxes_max_},
       {"deferred_insertions", deferrals},
       {"insertions_alone", alone_insertions_},
   };

@@ -25,9 +25,10 @@
 //    2019, section 4). A refusal ends the insertion before anything is
 //    written, and the point is retried in a later round, cut another way.
 //    Taking a simplex is a few loads and compares: no atomic
-//    read-modify-write, no lock word, nothing to release (the per-simplex
-//    compare-and-swap locks used here before cost the two-thread run 1.7
-//    times the serial CPU time, papers/triangulation_costs.md, session 43).
+//    read-modify-write, no lock word, nothing to release (with the
+//    per-simplex compare-and-swap locks used here before, the two-thread run
+//    took 1.6 times the serial run's CPU time: papers/triangulation_costs.md,
+//    session 43).
 //    Why two tasks never touch one simplex: a task writes its own simplices
 //    (its cavity, new slots) and the neighbour words of the simplices across
 //    its cavity's boundary, and reads its own simplices and their neighbours.
@@ -114,7 +115,10 @@ class BoxOwnership {
   }
   bool owns_point(const Point<D>& q) const {
     bool in = true;
-    for (int a = 0; a < D; ++a) in &= (q[a] >= lo_[a]) & (q[a] < hi_[a]);
+    for (int a = 0; a < D; ++a) {
+      in &= q[a] >= lo_[a];
+      in &= q[a] < hi_[a];
+    }
     return in;
   }
   bool owns_vertex(std::uint32_t v) const { return v == kGhost || owns_point(pts_[v]); }

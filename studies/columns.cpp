@@ -42,8 +42,8 @@ const std::vector<std::string>& algorithm_counter_names() {
       // cavities (bowyer-watson, george)
       "cavity_simplices", "max_cavity_simplices", "max_cavity_boundary", "cavity_size_1", "cavity_size_2_3",
       "cavity_size_4_7", "cavity_size_8_15", "cavity_size_16_31", "cavity_size_32_63", "cavity_size_64_up",
-      // bowyer-watson --threads T: the workers, their rounds, the points they put back
-      "threads", "parallel_rounds", "deferred_insertions", "insertions_alone",
+      // bowyer-watson --threads T: the workers, their rounds and boxes, the points they put back
+      "threads", "parallel_rounds", "parallel_boxes_max", "deferred_insertions", "insertions_alone",
       // lawson: insertions by type, flips by type
       "insert_1_3", "insert_2_4", "insert_1_4", "insert_2_6", "insert_n_2n", "insert_exterior", "exterior_facets",
       "insert_on_hull", "flips_2_2", "flips_2_3", "flips_3_2", "flips_4_4", "hull_edge_removals", "flips_total",

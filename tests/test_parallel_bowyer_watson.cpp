@@ -80,6 +80,7 @@ void check_all_thread_counts(const std::vector<Point<D>>& pts, std::uint64_t see
   for (unsigned t : {1u, 2u, 3u, 4u, 8u}) {
     ParallelBowyerWatson<K, D> par;
     par.set_threads(t);
+    par.set_vertices_per_box(256);  // T boxes on these small sets, not two
     par.keep_mesh();
     const TriangulationResult p = par.run(std::span<const Point<D>>(seq));
     INFO("threads " << t << ", " << seq.size() << " points in " << D << "D");
@@ -91,6 +92,8 @@ void check_all_thread_counts(const std::vector<Point<D>>& pts, std::uint64_t see
     const ValidationReport v = validate(std::span<const Point<D>>(seq), std::span<const std::uint32_t>(mapped));
     CHECK(v.delaunay());
     totals.rounds += counter(p, "parallel_rounds");
+    if (counter(p, "parallel_rounds") > 0)  // rounds of T boxes, not only two
+      CHECK(counter(p, "parallel_boxes_max") == t);
     totals.deferrals += counter(p, "deferred_insertions");
   }
 }
