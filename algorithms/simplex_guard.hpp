@@ -45,7 +45,6 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <vector>
 
 #include "algorithms/mesh.hpp"
 #include "predicates/point.hpp"
