@@ -75,11 +75,12 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
   constexpr int V = D + 1;
   Located r;
   std::uint32_t s = start;
-  int from = -1;           // facet of s through which the walk entered
-  std::uint32_t held = s;  // the last simplex the guard granted
+  int from = -1;  // facet of s through which the walk entered
+  // s is always granted but for a refused start; the walk never steps into a
+  // refused simplex.
   auto blocked = [&] {
     r.end = Located::End::blocked;
-    r.simplex = held;
+    r.simplex = s;
     return r;
   };
   if (!guard.acquire(s)) return blocked();
@@ -90,11 +91,10 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
       return r;
     }
     const std::uint32_t enc = m.neighbour(s, D);
+    if (!guard.acquire(Mesh<D>::simplex_of(enc))) return blocked();
     s = Mesh<D>::simplex_of(enc);
     from = Mesh<D>::facet_of(enc);
     ++r.steps;
-    if (!guard.acquire(s)) return blocked();
-    held = s;
   }
   for (;;) {
   next_simplex:
@@ -122,7 +122,6 @@ Located visibility_walk(const K& k, const Mesh<D>& m, const Point<D>* pts, std::
         s = Mesh<D>::simplex_of(enc);
         from = Mesh<D>::facet_of(enc);
         ++r.steps;
-        held = s;
         if (m.is_ghost(s)) {
           // Entered through the finite facet (the only facet a ghost shares
           // with a finite simplex), with p strictly beyond it.
