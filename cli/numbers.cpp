@@ -39,42 +39,45 @@ constexpr auto kHexValue = [] {
 int hex_value(char c) { return kHexValue[static_cast<unsigned char>(c)]; }
 bool is_hex_digit(char c) { return hex_value(c) >= 0; }
 
-// The normalised hexadecimal form that format_hex and C's "%a" write, without
-// its sign and "0x": "1.hhh...pE" with at most 13 fraction digits and
-// -1022 <= E <= 1023 (at most 4 exponent digits), whose value
-// 1.hhh... * 2^E is a normal double exactly (13 hex digits are its 52
-// fraction bits), assembled from its bits. Anything else: nullopt, and
-// from_chars reads it.
-std::optional<double> normalised_hex(std::string_view body) {
-  if (body.size() < 3 || body[0] != '1') return std::nullopt;
-  std::size_t i = 1;
+}  // namespace
+
+// 1.hhh...pE with at most 13 fraction digits (a double's 52 fraction bits) and
+// -1022 <= E <= 1023 is the normal double 1.hhh... * 2^E exactly: its bits are
+// assembled, nothing rounds.
+const char* read_normalised_hex(const char* p, const char* end, double& v) {
+  const bool negative = p < end && *p == '-';
+  if (p < end && (*p == '-' || *p == '+')) ++p;
+  if (end - p < 5 || p[0] != '0' || (p[1] != 'x' && p[1] != 'X') || p[2] != '1') return nullptr;
+  p += 3;
   std::uint64_t fraction = 0;
   int digits = 0;
-  if (body[i] == '.')
-    for (++i; i < body.size() && digits < 13; ++i, ++digits) {
-      const int h = hex_value(body[i]);
+  if (*p == '.')
+    for (++p; p < end && digits < 13; ++p, ++digits) {
+      const int h = hex_value(*p);
       if (h < 0) break;
       fraction = fraction << 4 | static_cast<std::uint64_t>(h);
     }
-  if (i >= body.size() || (body[i] != 'p' && body[i] != 'P')) return std::nullopt;
-  ++i;
-  const bool negative = i < body.size() && body[i] == '-';
-  if (i < body.size() && (body[i] == '-' || body[i] == '+')) ++i;
-  if (i == body.size() || body.size() - i > 4) return std::nullopt;
-  int e = 0;
-  for (; i < body.size(); ++i) {
-    if (!is_digit(body[i])) return std::nullopt;
-    e = 10 * e + (body[i] - '0');
-  }
-  if (negative) e = -e;
-  if (e < -1022 || e > 1023) return std::nullopt;
-  return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52 | fraction << (4 * (13 - digits)));
+  if (p == end || (*p != 'p' && *p != 'P')) return nullptr;
+  ++p;
+  const bool negative_exponent = p < end && *p == '-';
+  if (p < end && (*p == '-' || *p == '+')) ++p;
+  int e = 0, exponent_digits = 0;
+  for (; p < end && is_digit(*p) && exponent_digits <= 4; ++p, ++exponent_digits) e = 10 * e + (*p - '0');
+  if (exponent_digits == 0 || exponent_digits > 4) return nullptr;
+  if (negative_exponent) e = -e;
+  if (e < -1022 || e > 1023) return nullptr;
+  const double x = std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52 | fraction << (4 * (13 - digits)));
+  v = negative ? -x : x;
+  return p;
 }
-
-}  // namespace
 
 ParsedDouble parse_double(std::string_view tok) {
   ParsedDouble out;
+  const char* const end = tok.data() + tok.size();
+  if (read_normalised_hex(tok.data(), end, out.value) == end) {  // what dlab writes: no rounding
+    out.status = ParseStatus::ok;
+    return out;
+  }
   bool negative = false;
   std::string_view body = tok;
   if (!body.empty() && (body.front() == '+' || body.front() == '-')) {
@@ -83,12 +86,6 @@ ParsedDouble parse_double(std::string_view tok) {
   }
   bool hex = body.size() >= 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X');
   if (hex) body.remove_prefix(2);
-  if (hex)
-    if (const std::optional<double> v = normalised_hex(body)) {  // what dlab writes: no rounding
-      out.status = ParseStatus::ok;
-      out.value = negative ? -*v : *v;
-      return out;
-    }
   if (body.empty()) return out;
   // The first character must start a number (from_chars would also read
   // "inf"/"nan", handled below only for the decimal form).

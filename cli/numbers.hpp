@@ -26,6 +26,13 @@ struct ParsedDouble {
 // "nan"/"inf"/"infinity" are recognised and reported as such.
 ParsedDouble parse_double(std::string_view token);
 
+// The normalised hexadecimal float that format_hex and C's "%a" write for a
+// normal double, "[+-]0x1.hhh...p[+-]E" (at most 13 fraction digits, at most 4
+// exponent digits, -1022 <= E <= 1023), read from the front of [p, end) with no
+// rounding: the end of the number, its value in v. nullptr for anything else,
+// which parse_double reads. The readers' fast path: no token is cut first.
+const char* read_normalised_hex(const char* p, const char* end, double& v);
+
 // Human-readable reason for a non-ok status, e.g. "NaN coordinate 'nan'".
 std::string describe(ParseStatus status, std::string_view token);
 

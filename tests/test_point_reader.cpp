@@ -13,6 +13,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "cli/numbers.hpp"
 #include "cli/point_reader.hpp"
@@ -149,6 +150,32 @@ TEST_CASE("parse_double's shortcut for normalised hex floats agrees with strtod"
       const std::string t = "0x1." + std::string(static_cast<std::size_t>(position), '0') + c + "p-7";
       INFO(t);
       CHECK(same_bits(parsed(t), std::strtod(t.c_str(), nullptr)));
+    }
+}
+
+TEST_CASE("read_normalised_hex reads exactly the normalised form, and stops where it ends", "[io]") {
+  // {text, whether it is the normalised form}: each limit of the form, on both sides.
+  const std::pair<const char*, bool> cases[] = {
+      {"0x1p0", true},          {"-0X1P+0", true},         {"+0x1.p-1", true},
+      {"0x1.fffffffffffffp1023", true},                    {"0x1.0000000000001p-1022", true},
+      {"0x1.00000000000001p0", false},  // 14 fraction digits
+      {"0x1p1024", false},      {"0x1p-1023", false},      // out of the normal range
+      {"0x1p0001", true},       {"0x1p00001", false},      // 4, 5 exponent digits
+      {"0x1p", false},          {"0x1p-", false},          {"0x1.8", false},  // no exponent
+      {"0x2p0", false},         {"0x0.8p1", false},        {"1p0", false},    // not 0x1
+      {"0x", false},            {"", false},               {"-", false}};
+  for (const auto& [text, normalised] : cases)
+    for (const std::string tail : {"", " 1", ",", "#c", "\t", "x", "g"}) {
+      const std::string t = std::string(text) + tail;
+      INFO(t);
+      double v = -1;
+      const char* end = read_normalised_hex(t.data(), t.data() + t.size(), v);
+      if (!normalised) {
+        CHECK(end == nullptr);
+        continue;
+      }
+      REQUIRE(end == t.data() + std::strlen(text));
+      CHECK(same_bits(v, std::strtod(text, nullptr)));
     }
 }
 
@@ -298,6 +325,28 @@ TEST_CASE("plain INPUT: blanks, commas, comments, blank lines, CRLF, hex", "[io]
   CHECK(p3.p3[1] == Point3{4, 5, 6});
 }
 
+TEST_CASE("plain INPUT: the one-pass path for hex lines reads and refuses as the general one", "[io]") {
+  // From the second data line on, lines of normalised hex floats skip the
+  // tokens; everything else falls back to them, with the same messages.
+  const PointSet ps = parse_points("0x1p0 0x1p1\n0x1p2,0x1p3 # c\n\t0x1p4\t-0x1p5,\n0x1.00000000000001p0 0x1p0\n",
+                                   "f", false);
+  REQUIRE(ps.p2.size() == 4);
+  CHECK(ps.p2[1] == Point2{4, 8});
+  CHECK(ps.p2[2] == Point2{16, -32});
+  CHECK(same_bits(ps.p2[3][0], std::strtod("0x1.00000000000001p0", nullptr)));  // 14 digits: rounded
+  const PointSet p3 = parse_points("1 2 3\n0x1p-3 0x1.8p0 -0x1p1\n", "f", false);
+  REQUIRE(p3.p3.size() == 2);
+  CHECK(p3.p3[1] == Point3{0.125, 1.5, -2});
+  CHECK_THAT(error_of("0x1p0 0x1p1\n0x1p2 0x1p3x\n"), Catch::Contains("in.txt:2: unparsable number '0x1p3x'"));
+  CHECK_THAT(error_of("0x1p0 0x1p1\n0x1p2 0x1p3,x\n"), Catch::Contains("in.txt:2: wrong number of coordinates"));
+  CHECK_THAT(error_of("0x1p0 0x1p1\n0x1p2-0x1p3\n"), Catch::Contains("in.txt:2: wrong number of coordinates: expected 2 (as on line 1), found 1"));
+  CHECK_THAT(error_of("0x1p0 0x1p1\n0x1p2#0x1p3\n"),
+             Catch::Contains("in.txt:2: wrong number of coordinates: expected 2 (as on line 1), found 1"));
+  CHECK_THAT(error_of("0x1p0 0x1p1\n\n0x1p2 0x1p3 0x1p4\n"),
+             Catch::Contains("in.txt:3: wrong number of coordinates: expected 2 (as on line 1), found 3"));
+  CHECK_THAT(error_of("0x1p0 0x1p1\n0x1p2 0x1p99999\n"), Catch::Contains("in.txt:2: coordinate '0x1p99999' overflows"));
+}
+
 TEST_CASE("plain INPUT errors name the file, the line and the problem", "[io]") {
   CHECK_THAT(error_of("1 2\n3 4\nnan 5\n"), Catch::Contains("in.txt:3: NaN coordinate 'nan'"));
   CHECK_THAT(error_of("1 2\n-inf 5\n"), Catch::Contains("in.txt:2: infinite coordinate '-inf'"));
@@ -402,6 +451,33 @@ TEST_CASE("reading a stream in chunks gives what parsing the text gives", "[io]"
     for (std::size_t i = 0; i < a.p2.size(); ++i)
       for (int j = 0; j < 2; ++j) RC_ASSERT(same_bits(a.p2[i][j], b.p2[i][j]));
   });
+}
+
+TEST_CASE("a stream of known size is read into room reserved once, whatever its lines", "[io]") {
+  // reserve_for_input: after 1024 points, room for the rest at their bytes per
+  // point and a sixteenth (so capacity > size shows the reservation ran: a
+  // vector grown by doubling is shrunk to its size); lines that grow or shrink
+  // after the sample still read whole.
+  auto lines = [](std::size_t n, std::size_t pad) {
+    std::string t;
+    for (std::size_t i = 0; i < n; ++i) t += std::to_string(i % 10) + std::string(pad, ' ') + "0.5\n";
+    return t;
+  };
+  struct Case { std::string text; std::size_t n; bool reserved_once; };
+  const Case cases[] = {{lines(5000, 1), 5000, true},
+                        {lines(1024, 1) + lines(4000, 100), 5024, false},    // the guess too large: shrunk
+                        {lines(1024, 100) + lines(20000, 1), 21024, false}};  // too small: doubling
+  for (const Case& c : cases) {
+    std::istringstream in(c.text);
+    const PointSet a = read_points(in, "t", false), b = parse_points(c.text, "t", false);
+    REQUIRE(a.p2.size() == c.n);
+    CHECK(a.p2 == b.p2);
+    if (c.reserved_once) {
+      CHECK(a.p2.capacity() > c.n);
+      CHECK(a.p2.capacity() <= c.n * 17 / 16 + 64 + 1);
+    }
+    CHECK(a.p2.capacity() - a.p2.size() <= a.p2.size() / 8 + 64);
+  }
 }
 
 TEST_CASE("unreadable files are reported with their name", "[io]") {
