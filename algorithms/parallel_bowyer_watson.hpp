@@ -64,6 +64,7 @@
 #include "algorithms/cavity_search.hpp"
 #include "algorithms/huge_pages.hpp"
 #include "algorithms/initial_simplex.hpp"
+#include "algorithms/kd_boxes.hpp"
 #include "algorithms/locate.hpp"
 #include "algorithms/mesh.hpp"
 #include "algorithms/simplex_guard.hpp"
@@ -162,6 +163,7 @@ class ParallelBowyerWatson {
 
  public:
   static constexpr unsigned kMaxThreads = 255;  // the command line's limit (variants/registry.cpp)
+  static_assert(kMaxThreads <= 256, "a box's label is a byte");
 
   explicit ParallelBowyerWatson(const K& k = K{}) : k_(k) {}
 
@@ -225,21 +227,19 @@ class ParallelBowyerWatson {
   // (kNoStart: none found, every point waits) and its points.
   static constexpr std::uint32_t kNoStart = 0xFFFFFFFFu;
   struct Cell {
-    std::array<double, D> lo, hi;
     std::uint32_t start = kNoStart;
     std::vector<std::uint32_t> points, deferred;
   };
-  std::vector<Cell> cut_into_cells(std::vector<std::uint32_t> points, const std::array<int, D>& axes,
-                                   std::size_t boxes) const;
+  void label_vertices(const KdBoxes<D>& boxes);
   std::uint32_t live_simplex();
-  void find_start(Cell& cell);
+  void find_start(Cell& cell, std::uint8_t box);
   void insert_alone(const std::vector<std::uint32_t>& points);
   // `points` after `before` points: a batch of rounds.
   void insert_batch(std::vector<std::uint32_t> points, std::size_t before);
   void ensure_reserve(std::size_t slots);
   // A guard's view of the mesh (again whenever the mesh grows).
   void bind(PartitionGuard<D>& guard) {
-    guard.bind(mesh_, pts_);
+    guard.bind(mesh_, box_of_vertex_.data());
     if constexpr (D == 2) guard.bind_marks(mesh_.marks());
   }
   void reset_stamps_if_needed(std::uint64_t insertions);
@@ -266,6 +266,10 @@ class ParallelBowyerWatson {
   K k_;
   Mesh<D> mesh_;
   const Point<D>* pts_ = nullptr;
+  // Each point's box in the current round (labels 0 .. B - 1 < kMaxThreads),
+  // for the points below label_end_: the mesh's vertices and the batch's points.
+  std::vector<std::uint8_t> box_of_vertex_;
+  std::uint32_t label_end_ = 0;
   unsigned threads_ = 1;
   // 3D boxes of 2^18 vertices defer up to about 0.45 a point, 2D boxes of 2^17
   // about 0.25 (session 43's curves at 10^6 points).
@@ -442,58 +446,16 @@ void ParallelBowyerWatson<K, D>::insert_alone(const std::vector<std::uint32_t>& 
   }
 }
 
-// B boxes with equal shares of `points`, each share in the order given: the
-// points are cut along axes[0] into c_0 slabs at their quantiles, each slab
-// along axes[1] into c_1, and so on, B = c_0 c_1 ... with c_0 >= c_1 >= ...
-// (B's prime factors, largest first, each to the axis with the fewest
-// pieces).  Equal coordinates go to one side of a cut, so a share may be empty.
+// Between rounds: each point below label_end_ labelled with its box (a
+// vertex's label is what PartitionGuard compares).
 template <class K, int D>
-auto ParallelBowyerWatson<K, D>::cut_into_cells(std::vector<std::uint32_t> points, const std::array<int, D>& axes,
-                                                std::size_t boxes) const -> std::vector<Cell> {
-  std::vector<std::size_t> primes;
-  std::size_t rest = boxes;
-  for (std::size_t p = 2; p * p <= rest;)
-    if (rest % p == 0)
-      primes.push_back(p), rest /= p;
-    else
-      ++p;
-  if (rest > 1) primes.push_back(rest);
-  std::array<std::size_t, D> pieces;
-  pieces.fill(1);
-  for (auto p = primes.rbegin(); p != primes.rend(); ++p)
-    *std::min_element(pieces.begin(), pieces.end()) *= *p;  // the first of the fewest: the widest
-  std::vector<Cell> cells(1);
-  cells[0].lo.fill(-std::numeric_limits<double>::infinity());
-  cells[0].hi.fill(std::numeric_limits<double>::infinity());
-  cells[0].points = std::move(points);
-  std::vector<double> x;
-  for (int level = 0; level < D; ++level) {
-    const int a = axes[level];
-    const std::size_t c = pieces[level];
-    if (c == 1) continue;
-    std::vector<Cell> finer;
-    for (Cell& cell : cells) {
-      const std::size_t first = finer.size();
-      finer.resize(first + c, Cell{cell.lo, cell.hi, kNoStart, {}, {}});
-      x.resize(cell.points.size());
-      for (std::size_t j = 0; j < x.size(); ++j) x[j] = pts_[cell.points[j]][a];
-      auto from = x.begin();
-      for (std::size_t t = 1; t < c; ++t) {
-        const auto q = x.begin() + static_cast<std::ptrdiff_t>(t * x.size() / c);
-        if (!x.empty()) std::nth_element(from, q, x.end());
-        // An empty cell stays whole in its first piece; the others are empty boxes.
-        finer[first + t - 1].hi[a] = finer[first + t].lo[a] = x.empty() ? cell.hi[a] : *q;
-        from = q;
-      }
-      for (std::uint32_t i : cell.points) {
-        std::size_t t = first;
-        while (t + 1 < first + c && pts_[i][a] >= finer[t].hi[a]) ++t;
-        finer[t].points.push_back(i);
-      }
-    }
-    cells.swap(finer);
-  }
-  return cells;
+void ParallelBowyerWatson<K, D>::label_vertices(const KdBoxes<D>& boxes) {
+  auto label = [&](std::uint32_t first, std::uint32_t last) {
+    for (std::uint32_t i = first; i < last; ++i) box_of_vertex_[i] = static_cast<std::uint8_t>(boxes.box_of(pts_[i]));
+  };
+  if (label_end_ < (1u << 14)) return label(0, label_end_);
+  on_workers(tbb::blocked_range<std::uint32_t>(0, label_end_, 1u << 14), tbb::auto_partitioner(),
+             [&](const tbb::blocked_range<std::uint32_t>& r) { label(r.begin(), r.end()); });
 }
 
 // A live simplex (between rounds): a worker's last one, or the first live slot
@@ -512,10 +474,10 @@ std::uint32_t ParallelBowyerWatson<K, D>::live_simplex() {
 // deletes it), else kNoStart.  The middle point first: a box's first points in
 // Hilbert order are where the curve enters it, on its boundary.
 template <class K, int D>
-void ParallelBowyerWatson<K, D>::find_start(Cell& cell) {
+void ParallelBowyerWatson<K, D>::find_start(Cell& cell, std::uint8_t box) {
   PartitionGuard<D> guard;
   bind(guard);
-  guard.set_box(cell.lo, cell.hi);
+  guard.set_box(box);
   const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
   cell.start = kNoStart;
   std::uint32_t from = live_simplex();
@@ -566,8 +528,13 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points,
     reset_stamps_if_needed(points.size());
     std::array<int, D> order;
     for (int a = 0; a < D; ++a) order[a] = axes[(round + a) % D];
-    std::vector<Cell> cells = cut_into_cells(points, order, boxes);
-    for (Cell& cell : cells) find_start(cell);
+    KdBoxes<D> cut = cut_at_quantiles<D>(pts_, points, order, boxes);
+    label_vertices(cut);
+    std::vector<Cell> cells(cut.size());
+    for (std::size_t t = 0; t < cells.size(); ++t) {
+      cells[t].points = std::move(cut.shares[t]);
+      find_start(cells[t], static_cast<std::uint8_t>(t));
+    }
     // One task a box, on whichever thread is free; each thread inserts with
     // the worker of its arena slot.
     on_workers(tbb::blocked_range<std::size_t>(0, cells.size(), 1), tbb::simple_partitioner(),
@@ -576,7 +543,7 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points,
                  w.handoff.fetch_add(1, std::memory_order_acquire);
                  for (std::size_t t = range.begin(); t < range.end(); ++t) {
                    Cell& cell = cells[t];
-                   w.guard.set_box(cell.lo, cell.hi);
+                   w.guard.set_box(static_cast<std::uint8_t>(t));
                    w.last = cell.start;
                    for (std::size_t j = 0; j < cell.points.size(); ++j) {
                      const std::uint32_t i = cell.points[j];
@@ -596,7 +563,11 @@ void ParallelBowyerWatson<K, D>::insert_batch(std::vector<std::uint32_t> points,
                  w.handoff.fetch_add(1, std::memory_order_release);
                });
     ++rounds_;
-    boxes_max_ = std::max<std::uint64_t>(boxes_max_, cells.size());
+    // The boxes that inserted a point: T of them at best (fewer when a task's
+    // points all waited, or its box owned none of the mesh).
+    const auto busy = std::count_if(cells.begin(), cells.end(),
+                                    [](const Cell& c) { return c.deferred.size() < c.points.size(); });
+    boxes_max_ = std::max<std::uint64_t>(boxes_max_, static_cast<std::uint64_t>(busy));
     std::vector<std::uint32_t> rest;
     for (const Cell& cell : cells) rest.insert(rest.end(), cell.deferred.begin(), cell.deferred.end());
     if (rest.size() == points.size() && round + 1 >= D) {  // no progress along any axis: one worker does the rest
@@ -620,6 +591,8 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   if (!first) return res;
   merged_.assign(n, kNotProcessed);
   for (std::uint32_t id : first->ids) merged_[id] = id;
+  box_of_vertex_ = huge_vector<std::uint8_t>(n);
+  label_end_ = *std::max_element(first->ids.begin(), first->ids.end()) + 1;
   // Room for 7.5 tetrahedra (2.25 triangles) a point, more than
   // start_incremental_mesh's 7 (2): the batches' reserve of 7 (2) a point and
   // a slack went past it at the last batch, which copied the whole mesh
@@ -650,6 +623,7 @@ TriangulationResult ParallelBowyerWatson<K, D>::run(std::span<const Point<D>> pt
   insert_alone(std::vector<std::uint32_t>(order.begin(), order.begin() + pos));
   while (pos < order.size() && !failed_.load(std::memory_order_relaxed)) {
     const std::size_t end = std::min(order.size(), 2 * pos);
+    label_end_ = std::max(label_end_, order[end - 1] + 1);  // the batch's points in order
     insert_batch(std::vector<std::uint32_t>(order.begin() + pos, order.begin() + end), pos);
     pos = end;
   }
