@@ -100,7 +100,7 @@ class TopBitMarks {
 // (PartitionGuard, in the header comment).  Each vertex carries the label of
 // the box its point lies in, written between rounds; a task's box is a label.
 // (Comparing the vertices' coordinates with the box's bounds at each acquire
-// was 15 % of the instructions of a two-thread run: session 44.)
+// was 14 % of the instructions of a two-thread run: session 44.)
 template <int D>
 class BoxOwnership {
  public:
