@@ -10,9 +10,14 @@
 // "always") and it has them free; nothing else changes, the results least of
 // all. Elsewhere: nothing.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <iterator>
+#include <memory>
+#include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 #if defined(__linux__)
@@ -87,6 +92,25 @@ std::vector<T> huge_vector(std::size_t n, const T& value = T{}) {
   std::vector<T> v;
   assign_huge(v, n, value);
   return v;
+}
+
+// Room for n elements of a trivial type, not written (no value-initialising
+// pass: each page is faulted in by its first real write, on whichever thread
+// makes it), in huge pages from its start.
+struct FreeMemory {
+  void operator()(void* p) const { std::free(p); }
+};
+template <class T>
+using HugeBuffer = std::unique_ptr<T[], FreeMemory>;
+template <class T>
+HugeBuffer<T> huge_buffer(std::size_t n) {
+  static_assert(std::is_trivially_default_constructible_v<T> && std::is_trivially_destructible_v<T>);
+  const std::size_t bytes = std::max<std::size_t>(n * sizeof(T), 1);
+  void* p = bytes >= kHugePage ? std::aligned_alloc(kHugePage, (bytes + kHugePage - 1) / kHugePage * kHugePage)
+                               : std::malloc(bytes);
+  if (p == nullptr) throw std::bad_alloc();
+  if (bytes >= kHugePage) advise_huge_pages(p, bytes);
+  return HugeBuffer<T>(static_cast<T*>(p));
 }
 
 }  // namespace dlab

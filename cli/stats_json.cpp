@@ -75,6 +75,11 @@ void write_stats_json(std::ostream& out, const StatsRecord& r) {
   j["simplices"] = res.simplices.size() / k;
   j["seconds"] = res.seconds;
   j["cpu_seconds"] = res.cpu_seconds;
+  Json phases = Json::object();
+  phases["order"] = res.phase_seconds.order;
+  phases["triangulate"] = res.phase_seconds.triangulate;
+  phases["output"] = res.phase_seconds.output;
+  j["phase_seconds"] = phases;
   j["peak_rss_bytes"] = r.peak_rss_bytes;
   j["predicates"] = counters(res.predicates);
   j["counters"] = counters(res.counters);

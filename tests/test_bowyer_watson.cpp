@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 #include <vector>
@@ -522,6 +523,46 @@ TEST_CASE("bw: insertion orders are permutations and deterministic", "[bw]") {
 // The 2D and 3D tables are Skilling's transform read as state machines
 // (variants/insertion_order.cpp): the same index on every cell of the small
 // grids, and on random cells up to the largest level count a 64-bit key holds.
+TEST_CASE("bw: sort_indices_by_key sorts stably, the same on every thread count", "[bw]") {
+  // Keys with many ties (stability decides their order), a digit that never
+  // varies (skipped) and ranges of several of the sort's chunks (32 768
+  // entries each): checked against std::stable_sort.
+  std::mt19937_64 g(11);
+  for (std::size_t n : {std::size_t{200}, std::size_t{5000}, std::size_t{200000}}) {
+    std::vector<std::uint64_t> keys(n + 100);
+    for (auto& k : keys) k = (g() % 50) << 53 | (g() % 64) << 11 | 5;
+    std::vector<std::uint32_t> idx(keys.size());
+    std::iota(idx.begin(), idx.end(), 0u);
+    std::shuffle(idx.begin(), idx.end(), g);
+    std::vector<std::uint32_t> expected = idx;
+    std::stable_sort(expected.begin() + 50, expected.begin() + 50 + n,
+                     [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+    for (unsigned threads : {1u, 2u, 3u}) {
+      std::vector<std::uint32_t> got = idx;
+      sort_indices_by_key(got, 50, 50 + n, keys, threads);
+      INFO("n " << n << ", threads " << threads);
+      const bool same = got == expected;  // not the vectors themselves: Catch would print 200 000 numbers
+      CHECK(same);
+    }
+  }
+}
+
+TEST_CASE("bw: the phases of `seconds` add up to it", "[bw]") {
+  RunOptions o;
+  o.kernel = "adaptive";
+  for (unsigned threads : {0u, 2u}) {
+    o.threads = threads;
+    const RunResult r = run(point_set<3>(uniform_points<3>(20000, 4)), o);
+    REQUIRE(r.outcome == RunResult::Outcome::ok);
+    const RunResult::Phases& p = r.phase_seconds;
+    INFO("threads " << threads);
+    CHECK(p.order > 0);
+    CHECK(p.triangulate > 0);
+    CHECK(p.output > 0);
+    CHECK(std::fabs(p.order + p.triangulate + p.output - r.seconds) <= 1e-9 * r.seconds);
+  }
+}
+
 TEST_CASE("bw: the Hilbert tables give Skilling's index", "[bw]") {
   auto same = [](std::array<std::uint32_t, 3> c, int n, int bits) {
     std::array<std::uint32_t, 3> d = c;

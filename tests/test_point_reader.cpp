@@ -640,6 +640,7 @@ TEST_CASE("--stats JSON has the contract's keys in order and escapes strings", "
   for (const char* key : {"\"algorithm\": \"bowyer-watson\"", "\"kernel\": \"adaptive\"", "\"policy\": \"sos\"",
                           "\"order\": \"brio\"", "\"seed\": 0", "\"dimension\": 2", "\"input_points\": 4",
                           "\"distinct_points\": 3", "\"simplices\": 1", "\"seconds\": 0", "\"cpu_seconds\": 0",
+                          "\"phase_seconds\": {", "\"order\": 0", "\"triangulate\": 0", "\"output\": 0",
                           "\"peak_rss_bytes\": 0", "\"predicates\": {", "\"orient2d\": 5",
                           "\"counters\": {", "\"walk_steps\": 7", "\"flips\": 0", "\"snapping\": {}",
                           "\"outcome\": \"ok\"",

@@ -4,25 +4,12 @@
 #include <bit>
 #include <utility>
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
 #include "algorithms/canonical_simplices.hpp"
 #include "algorithms/huge_pages.hpp"
+#include "variants/for_ranges.hpp"
 
 namespace dlab {
 namespace {
-
-// Runs f(first, last) over [0, n) cut into ranges of about `grain`, on
-// `threads` oneTBB threads when > 1.
-template <class F>
-void for_ranges(std::size_t n, unsigned threads, F&& f, std::size_t grain = 1 << 14) {
-  if (threads <= 1) return f(std::size_t{0}, n);
-  tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, threads);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                    [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
-}
 
 // Bits of the smallest index that the first pass sorts on: 2^12 bins, whose
 // simplices (about 1 700 at 10^6 points in 3D) then fit a core's cache.
@@ -56,11 +43,7 @@ void sort_dimension(std::vector<std::uint32_t>& flat, unsigned threads) {
   };
   const std::size_t chunk = std::max<std::size_t>(std::size_t{1} << 16, (m + 255) / 256);
   const std::size_t chunks = (m + chunk - 1) / chunk;
-  auto for_chunks = [&](auto&& f) {
-    for_ranges(chunks, threads, [&](std::size_t first, std::size_t last) {
-      for (std::size_t c = first; c < last; ++c) f(c, c * chunk, std::min(m, (c + 1) * chunk));
-    }, 1);
-  };
+  auto for_chunks = [&](auto&& f) { dlab::for_chunks(m, chunk, threads, f); };
 
   std::vector<std::uint32_t> chunk_top(chunks, 0);
   for_chunks([&](std::size_t c, std::size_t lo, std::size_t hi) {

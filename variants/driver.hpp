@@ -139,12 +139,14 @@ void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, Run
   InInsertionOrder<D> in_order(
       pts, insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads));
   const PackedIndices& order = in_order.order();
+  const auto t1 = std::chrono::steady_clock::now();
 
   Algo<K, D> algo(k);
   if constexpr (HasLocationScheme<Algo<K, D>>) algo.set_location(location_scheme(o.location));
   if constexpr (HasThreads<Algo<K, D>>) algo.set_threads(o.threads);
   release_free_heap(pts.size());
   TriangulationResult t = algo.run(std::span<const Point<D>>(pts));
+  const auto t2 = std::chrono::steady_clock::now();
   in_order.restore();
 
   r.outcome = t.outcome;
@@ -168,7 +170,10 @@ void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, Run
     map_indices(r.simplices, rep, o.threads);
     if (o.canonical || o.threads > 0) sort_canonically(r.simplices, D, o.threads);
   }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto t3 = std::chrono::steady_clock::now();
+  auto span = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
+  r.seconds = span(t0, t3);
+  r.phase_seconds = {span(t0, t1), span(t1, t2), span(t2, t3)};
   r.cpu_seconds = thread_cpu_seconds() - cpu0;
   if (t.outcome == RunResult::Outcome::lower_dimensional) r.distinct_points = count_distinct<D>(pts);
 

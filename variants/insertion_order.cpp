@@ -6,11 +6,8 @@
 #include <cmath>
 #include <utility>
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
 #include "algorithms/huge_pages.hpp"
+#include "variants/for_ranges.hpp"
 #include "variants/run.hpp"
 
 namespace dlab {
@@ -206,13 +203,13 @@ void shuffle(std::vector<std::uint32_t>& v, std::uint64_t seed) {
 // Hilbert keys over the bounding cube of the points (one scale for every axis,
 // so the curve keeps distances; halves avoid overflow of max - min).
 template <int D>
-std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts, unsigned threads) {
+HugeBuffer<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts, unsigned threads) {
   // Cells per axis: about 16 per point along each axis (2^(log2(n)/D + 4)),
   // at most 2^24 (2D) / 2^18 (3D).  The key's cost is linear in the bits.
   constexpr int max_bits = D == 2 ? 24 : 18;
   int bits = 4;
   while (bits < max_bits && (std::uint64_t(1) << (D * (bits - 4))) < pts.size()) ++bits;
-  std::vector<std::uint64_t> keys = huge_vector<std::uint64_t>(pts.size());
+  HugeBuffer<std::uint64_t> keys = huge_buffer<std::uint64_t>(pts.size());
   if (pts.empty()) return keys;
   Point<D> lo = pts[0], hi = pts[0];
   for (const auto& p : pts)
@@ -241,54 +238,79 @@ std::vector<std::uint64_t> hilbert_keys(std::span<const Point<D>> pts, unsigned 
       keys[i] = hilbert_key(x, D, bits);
     }
   };
-  if (threads > 1) {
-    tbb::global_control allowed(tbb::global_control::max_allowed_parallelism, threads);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 4096),
-                      [&](const tbb::blocked_range<std::size_t>& r) { key_range(r.begin(), r.end()); });
-  } else {
-    key_range(0, pts.size());
-  }
+  for_ranges(pts.size(), threads, key_range, 4096);
   return keys;
 }
 
+struct KeyedIndex {
+  std::uint64_t key;
+  std::uint32_t index;
+};
+
 // Stable LSD radix sort of idx[first, last) by keys[idx], 11-bit digits,
-// skipping digits on which all keys agree.
-void sort_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t last,
-                 const std::vector<std::uint64_t>& keys) {
+// skipping digits on which all keys agree; a and b: room for last - first
+// entries.  Each pass counts its digits in fixed chunks of the entries, then
+// each chunk moves its entries to places of its own (after the earlier
+// chunks' entries of the same digit): on `threads` oneTBB threads, with the
+// same result for every thread count.
+void sort_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t last, const std::uint64_t* keys,
+                 KeyedIndex* a, KeyedIndex* b, unsigned threads) {
   const std::size_t n = last - first;
   if (n < 2) return;
   if (n < 256) {
     std::stable_sort(idx.begin() + first, idx.begin() + last,
-                     [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+                     [&](std::uint32_t x, std::uint32_t y) { return keys[x] < keys[y]; });
     return;
   }
-  using Entry = std::pair<std::uint64_t, std::uint32_t>;
-  std::vector<Entry> a = huge_vector<Entry>(n), b = huge_vector<Entry>(n);
+  constexpr int digit = 11;  // 2048 buckets: a chunk's counters and write heads stay in L1
+  constexpr std::size_t buckets = std::size_t{1} << digit;
+  const std::size_t chunk = std::max<std::size_t>(std::size_t{1} << 15, (n + 63) / 64);
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  auto for_chunks = [&](auto&& f) { dlab::for_chunks(n, chunk, threads, f); };
+  std::vector<std::uint64_t> chunk_or(chunks, 0), chunk_and(chunks, ~std::uint64_t(0));
+  for_chunks([&](std::size_t c, std::size_t lo, std::size_t hi) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      const std::uint32_t j = idx[first + i];
+      a[i] = {keys[j], j};
+      chunk_or[c] |= a[i].key;
+      chunk_and[c] &= a[i].key;
+    }
+  });
   std::uint64_t all_or = 0, all_and = ~std::uint64_t(0);
-  for (std::size_t i = 0; i < n; ++i) {
-    a[i] = {keys[idx[first + i]], idx[first + i]};
-    all_or |= a[i].first;
-    all_and &= a[i].first;
-  }
+  for (std::size_t c = 0; c < chunks; ++c) all_or |= chunk_or[c], all_and &= chunk_and[c];
   const std::uint64_t varying = all_or ^ all_and;
-  constexpr int digit = 11;  // 2048 buckets: the counters and write heads stay in L1
-  constexpr std::uint64_t dmask = (1u << digit) - 1;
-  std::vector<std::size_t> count(std::size_t(1) << digit);
+  constexpr std::uint64_t dmask = buckets - 1;
+  std::vector<std::size_t> at(chunks * buckets);  // at[c * buckets + d]: chunk c's next place for digit d
   for (int shift = 0; shift < 64; shift += digit) {
     if (((varying >> shift) & dmask) == 0) continue;
-    std::fill(count.begin(), count.end(), 0);
-    for (const auto& e : a) ++count[(e.first >> shift) & dmask];
+    std::fill(at.begin(), at.end(), 0);
+    for_chunks([&](std::size_t c, std::size_t lo, std::size_t hi) {
+      std::size_t* count = &at[c * buckets];
+      for (std::size_t i = lo; i < hi; ++i) ++count[(a[i].key >> shift) & dmask];
+    });
     std::size_t sum = 0;
-    for (auto& c : count) {
-      const std::size_t t = c;
-      c = sum;
-      sum += t;
-    }
-    for (const auto& e : a) b[count[(e.first >> shift) & dmask]++] = e;
-    a.swap(b);
+    for (std::size_t d = 0; d < buckets; ++d)
+      for (std::size_t c = 0; c < chunks; ++c) sum += std::exchange(at[c * buckets + d], sum);
+    for_chunks([&](std::size_t c, std::size_t lo, std::size_t hi) {
+      std::size_t* next = &at[c * buckets];
+      for (std::size_t i = lo; i < hi; ++i) b[next[(a[i].key >> shift) & dmask]++] = a[i];
+    });
+    std::swap(a, b);
   }
-  for (std::size_t i = 0; i < n; ++i) idx[first + i] = a[i].second;
+  for_chunks([&](std::size_t, std::size_t lo, std::size_t hi) {
+    for (std::size_t i = lo; i < hi; ++i) idx[first + i] = a[i].index;
+  });
 }
+
+}  // namespace
+
+void sort_indices_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t last,
+                         std::span<const std::uint64_t> keys, unsigned threads) {
+  const auto a = huge_buffer<KeyedIndex>(last - first), b = huge_buffer<KeyedIndex>(last - first);
+  sort_by_key(idx, first, last, keys.data(), a.get(), b.get(), threads);
+}
+
+namespace {
 
 template <int D>
 std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOrder order,
@@ -301,17 +323,23 @@ std::vector<std::uint32_t> order_impl(std::span<const Point<D>> pts, InsertionOr
     case InsertionOrder::random:
       shuffle(idx, seed);
       break;
-    case InsertionOrder::hilbert:
-      sort_by_key(idx, 0, idx.size(), hilbert_keys<D>(pts, threads));
+    case InsertionOrder::hilbert: {
+      const auto keys = hilbert_keys<D>(pts, threads);
+      const auto a = huge_buffer<KeyedIndex>(idx.size()), b = huge_buffer<KeyedIndex>(idx.size());
+      sort_by_key(idx, 0, idx.size(), keys.get(), a.get(), b.get(), threads);
       break;
+    }
     case InsertionOrder::brio: {
       shuffle(idx, seed);
       const auto keys = hilbert_keys<D>(pts, threads);
-      // Rounds [0, b_k), [b_k, b_{k-1}), ..., [b_1, n) with b_{j+1} = b_j / 8.
+      // Rounds [0, b_k), [b_k, b_{k-1}), ..., [b_1, n) with b_{j+1} = b_j / 8;
+      // the last is the largest.
       std::size_t end = idx.size();
+      const std::size_t largest = end - (end >= 64 ? end / 8 : 0);
+      const auto a = huge_buffer<KeyedIndex>(largest), b = huge_buffer<KeyedIndex>(largest);
       while (end > 0) {
         const std::size_t begin = end >= 64 ? end / 8 : 0;
-        sort_by_key(idx, begin, end, keys);
+        sort_by_key(idx, begin, end, keys.get(), a.get(), b.get(), threads);
         end = begin;
       }
       break;

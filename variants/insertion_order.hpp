@@ -32,12 +32,18 @@ enum class InsertionOrder { input, random, brio, hilbert };
 InsertionOrder parse_insertion_order(std::string_view name);
 
 // A permutation of 0..n-1: position i holds the input index inserted i-th.
-// threads > 1: the Hilbert keys are computed on that many oneTBB threads (for
-// --threads); the permutation is the same for every value.
+// threads > 1: the Hilbert keys and their sorts run on that many oneTBB
+// threads (for --threads); the permutation is the same for every value.
 std::vector<std::uint32_t> insertion_order(std::span<const Point2> pts, InsertionOrder order,
                                            std::uint64_t seed, unsigned threads = 1);
 std::vector<std::uint32_t> insertion_order(std::span<const Point3> pts, InsertionOrder order,
                                            std::uint64_t seed, unsigned threads = 1);
+
+// Sorts idx[first, last) by keys[idx[i]], stably (each BRIO round, the
+// Hilbert order), on `threads` oneTBB threads; the same result for every
+// value.
+void sort_indices_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std::size_t last,
+                         std::span<const std::uint64_t> keys, unsigned threads = 1);
 
 // Puts `v` in insertion order: v[i] becomes the old v[order[i]] (order from
 // insertion_order, or anything indexed so: PackedIndices); with `back`, undoes it. Out of place when memory allows

@@ -63,6 +63,13 @@ struct RunResult {
   std::size_t inserted_points = 0;
   double seconds = 0;        // triangulating only
   double cpu_seconds = 0;    // CPU time over the same span (CLOCK_THREAD_CPUTIME_ID: variants/driver.hpp)
+  // `seconds` in three consecutive parts (wall time): putting the points in
+  // insertion order, the algorithm's run (taking the simplices out of its mesh
+  // included), and mapping them to input indices and sorting them (--canonical,
+  // --threads).  Zero where they are not timed (`dlab flip`).
+  struct Phases {
+    double order = 0, triangulate = 0, output = 0;
+  } phase_seconds;
   Counters counters;         // algorithm counters: "walk_steps", "cavity_simplices", "flips_2_3", ...
   Counters predicates;       // "orient2d", "orient2d.A", ... calls per predicate and per stage answered
   Counters snapping;         // integer kernel: "points_moved", "points_merged", ...; empty otherwise
