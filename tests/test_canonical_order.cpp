@@ -84,3 +84,39 @@ TEST_CASE("canonical order: duplicates, one shared smallest index, empty", "[can
   check_every_thread_count<2>({});
   check_every_thread_count<3>({4, 2, 9, 1});
 }
+
+// canonical_simplex against its definition, on every order of D + 1 distinct
+// indices (small, and at the top of the range): the result is the input's
+// indices, an even permutation of them (the orientation kept; parity counted
+// here by inversions, not by the network's exchanges), ascending but for the
+// last two.  Would catch: a comparator of the network missing or misplaced
+// (some order unsorted), an exchange not counted (half the orders flipped).
+template <int D>
+void check_canonical_simplex(IndexSimplex<D> values) {
+  std::sort(values.begin(), values.end());
+  auto inversions = [](const IndexSimplex<D>& s) {
+    int n = 0;
+    for (int i = 0; i <= D; ++i)
+      for (int j = i + 1; j <= D; ++j) n += s[i] > s[j];
+    return n;
+  };
+  IndexSimplex<D> in = values;
+  do {
+    const IndexSimplex<D> out = canonical_simplex<D>(in);
+    IndexSimplex<D> sorted_out = out;
+    std::sort(sorted_out.begin(), sorted_out.end());
+    INFO(D << "D input " << in[0] << " " << in[1] << " " << in[2]);
+    CHECK(sorted_out == values);
+    // in -> out is even iff the two inversion counts have the same parity.
+    CHECK(inversions(in) % 2 == inversions(out) % 2);
+    for (int i = 0; i + 1 < D; ++i) CHECK(out[i] < out[i + 1]);
+    CHECK(out[D - 2] < out[D]);
+  } while (std::next_permutation(in.begin(), in.end()));
+}
+
+TEST_CASE("canonical order: each simplex sorted, its orientation kept", "[canonical_order]") {
+  check_canonical_simplex<2>({0, 1, 2});
+  check_canonical_simplex<2>({5, 0xfffffffeu, 0xffffffffu});
+  check_canonical_simplex<3>({0, 1, 2, 3});
+  check_canonical_simplex<3>({7, 1u << 31, 0xfffffffeu, 0xffffffffu});
+}
