@@ -449,6 +449,16 @@ TEST_CASE("bw: insertion orders are permutations and deterministic", "[bw]") {
     std::sort(a.begin(), a.end());
     for (std::uint32_t i = 0; i < a.size(); ++i) REQUIRE(a[i] == i);
   }
+  // Out of place on 3 threads (ranges of 2^14 points: several here).
+  const auto many = uniform_points<3>(50000, 98);
+  const auto order = insertion_order(std::span<const Point3>(many), InsertionOrder::brio, 5, 3);
+  std::vector<Point3> moved = many, gathered(many.size());
+  for (std::size_t i = 0; i < many.size(); ++i) gathered[i] = many[order[i]];
+  std::vector<bool> scratch;
+  apply_order(moved, std::span<const std::uint32_t>(order), false, scratch, false, 3);
+  CHECK(moved == gathered);
+  apply_order(moved, std::span<const std::uint32_t>(order), true, scratch, false, 3);
+  CHECK(moved == many);
   // The Hilbert order does not depend on the scale: the same points times
   // 2^-1073 (subnormals: cells / extent would overflow) and times 2^900 make a
   // tour as short as the unscaled ones (within rounding at cell edges). It

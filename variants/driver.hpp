@@ -94,9 +94,9 @@ std::size_t count_distinct(std::vector<Point<D>> pts) {
 template <int D>
 class InInsertionOrder {
  public:
-  InInsertionOrder(std::vector<Point<D>>& pts, const std::vector<std::uint32_t>& order)
-      : pts_(pts), order_(order, pts.size()) {  // packed first: a bad_alloc leaves pts as they were
-    apply_order(pts_, order, false, done_);
+  InInsertionOrder(std::vector<Point<D>>& pts, const std::vector<std::uint32_t>& order, unsigned threads)
+      : pts_(pts), order_(order, pts.size()), threads_(threads) {  // packed first: a bad_alloc leaves pts as they were
+    apply_order(pts_, order, false, done_, false, threads_);
   }
   ~InInsertionOrder() { restore(); }
   InInsertionOrder(const InInsertionOrder&) = delete;
@@ -105,7 +105,7 @@ class InInsertionOrder {
   void restore() {
     if (restored_) return;
     restored_ = true;
-    apply_order(pts_, order_, true, done_);
+    apply_order(pts_, order_, true, done_, false, threads_);
   }
   // Position i holds the input index of the point inserted i-th.
   const PackedIndices& order() const { return order_; }
@@ -114,6 +114,7 @@ class InInsertionOrder {
   std::vector<Point<D>>& pts_;
   PackedIndices order_;
   std::vector<bool> done_;
+  unsigned threads_;
   bool restored_ = false;
 };
 
@@ -137,7 +138,8 @@ void run_kernel(const K& k, std::vector<Point<D>>& pts, const RunOptions& o, Run
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
   InInsertionOrder<D> in_order(
-      pts, insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads));
+      pts, insertion_order(std::span<const Point<D>>(pts), parse_insertion_order(o.order), o.seed, o.threads),
+      o.threads);
   const PackedIndices& order = in_order.order();
   const auto t1 = std::chrono::steady_clock::now();
 

@@ -14,6 +14,7 @@
 // the shuffle, keys come from IEEE double arithmetic without contraction, and
 // sorting breaks ties by index.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <new>
 #include <span>
@@ -23,6 +24,7 @@
 
 #include "algorithms/huge_pages.hpp"
 #include "predicates/point.hpp"
+#include "variants/for_ranges.hpp"
 
 namespace dlab {
 
@@ -46,23 +48,29 @@ void sort_indices_by_key(std::vector<std::uint32_t>& idx, std::size_t first, std
                          std::span<const std::uint64_t> keys, unsigned threads = 1);
 
 // Puts `v` in insertion order: v[i] becomes the old v[order[i]] (order from
-// insertion_order, or anything indexed so: PackedIndices); with `back`, undoes it. Out of place when memory allows
-// (independent loads and stores, many cache misses in flight); otherwise, or
-// with `in_place`, along the permutation's cycles, whose chained misses made it
-// 3x slower than the run's own ordering work on 10^6 points, but which needs
-// only `done` (one bit per element; allocates nothing once it has v's size).
+// insertion_order, or anything indexed so: PackedIndices); with `back`, undoes
+// it. Out of place when memory allows: independent loads and stores, many cache
+// misses in flight, into a buffer that nothing fills first, on `threads`
+// oneTBB threads, then copied back into v's own pages. Otherwise, or with
+// `in_place`, along the permutation's cycles, whose chained misses made it 3x
+// slower than the run's own ordering work on 10^6 points, but which needs only
+// `done` (one bit per element; allocates nothing once it has v's size).
 template <class T, class Order>
-void apply_order(std::vector<T>& v, const Order& order, bool back, std::vector<bool>& done, bool in_place = false) {
+void apply_order(std::vector<T>& v, const Order& order, bool back, std::vector<bool>& done, bool in_place = false,
+                 unsigned threads = 1) {
   if (!in_place) {
     try {
-      std::vector<T> out = huge_vector<T>(v.size());
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        if (back)
-          out[order[i]] = v[i];
-        else
-          out[i] = v[order[i]];
-      }
-      v.swap(out);
+      const HugeBuffer<T> out = huge_buffer<T>(v.size());
+      for_ranges(v.size(), threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+          if (back)
+            out[order[i]] = v[i];
+          else
+            out[i] = v[order[i]];
+        }
+      });
+      for_ranges(v.size(), threads,
+                 [&](std::size_t first, std::size_t last) { std::copy(out.get() + first, out.get() + last, v.data() + first); });
       return;
     } catch (const std::bad_alloc&) {
     }
