@@ -10,7 +10,8 @@
 # configurations (and the binaries, when several are given: a build before and
 # after a change) so that a change in the machine's load hits all of them.
 # Output: for each binary, one markdown row per configuration: threads, median
-# seconds, speed-up over that binary's serial run, and the deferred insertions
+# seconds, speed-up over that binary's serial run, the medians of the three
+# phase_seconds (order, triangulate, output), and the deferred insertions
 # (points put back after meeting another worker) of the last run. Every output
 # is compared with the first binary's serial one byte for byte; a difference
 # stops the script with exit 1.
@@ -37,24 +38,28 @@ for ((r = 0; r < repeat; ++r)); do
       if [ "$c" = serial ]; then opt=(--canonical); else opt=(--threads "$c"); fi
       "${binaries[b]}" triangulate "$work/p.txt" --kernel "$kernel" "${opt[@]}" -o "$work/$b.$c.tri" \
         --stats "$work/$b.$c.json"
-      grep -o '"seconds": [0-9.e+-]*' "$work/$b.$c.json" | cut -d' ' -f2 >> "$work/$b.$c.sec"
+      python3 -c 'import json, sys
+d = json.load(open(sys.argv[1])); p = d.get("phase_seconds", {})  # none before session 45
+print(d["seconds"], *(p.get(k, "nan") for k in ("order", "triangulate", "output")))' "$work/$b.$c.json" >> "$work/$b.$c.sec"
       [ -t 2 ] && printf '\rrun %d/%d: binary %d, %-6s' $((r + 1)) "$repeat" $((b + 1)) "$c" >&2
     done
   done
 done
 [ -t 2 ] && printf '\r%40s\r' '' >&2
-median() { sort -g "$1" | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+# median FILE COLUMN
+median() { cut -d' ' -f"$2" "$1" | sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 for ((b = 0; b < ${#binaries[@]}; ++b)); do
-  base=$(median "$work/$b.serial.sec")
+  base=$(median "$work/$b.serial.sec" 1)
   [ $b -gt 0 ] && echo
-  echo "| $gen ${dim}D n=$n $kernel, ${binaries[b]} | threads | seconds | speed-up over serial | deferred insertions |"
-  echo "|---|---:|---:|---:|---:|"
+  echo "| $gen ${dim}D n=$n $kernel, ${binaries[b]} | threads | seconds | speed-up over serial | order | triangulate | output | deferred insertions |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|"
   for c in "${configs[@]}"; do
     cmp -s "$work/0.serial.tri" "$work/$b.$c.tri" ||
       { echo "${binaries[b]} $c: output differs from ${binaries[0]}'s serial one" >&2; exit 1; }
-    s=$(median "$work/$b.$c.sec")
+    s=$(median "$work/$b.$c.sec" 1)
+    phases=$(for k in 2 3 4; do median "$work/$b.$c.sec" $k; done | awk '{printf "%.3f | ", $1}')
     d=$(grep -o '"deferred_insertions": [0-9]*' "$work/$b.$c.json" | cut -d' ' -f2 || true)
-    awk -v c="$c" -v s="$s" -v b="$base" -v d="${d:--}" \
-      'BEGIN {printf "| | %s | %.3f | %.2f | %s |\n", c, s, b / s, d}'
+    awk -v c="$c" -v s="$s" -v b="$base" -v p="$phases" -v d="${d:--}" \
+      'BEGIN {printf "| | %s | %.3f | %.2f | %s%s |\n", c, s, b / s, p, d}'
   done
 done
