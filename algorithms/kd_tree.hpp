@@ -1,14 +1,15 @@
 // A bounding-box kd-tree over a point set, for the candidate search of the
 // Tanemura–Ogawa–Ogita front (algorithms/tanemura.hpp). Each node splits its
-// points at the median of its widest axis (Bentley, CACM 18 (1975); Friedman,
-// Bentley, Finkel, ACM TOMS 3 (1977)); leaves hold at most kLeaf points; every
-// node keeps the bounding box of its own points.
+// points on its widest axis (Bentley, CACM 18 (1975); Friedman, Bentley,
+// Finkel, ACM TOMS 3 (1977)), at the rank that gives every leaf kLeaf - 1 or
+// kLeaf points (split_count); every node keeps the bounding box of its own
+// points.
 //
 // Why not a uniform bucket grid (Tanemura, Ogawa, Ogita 1983; Baker §16.2.3):
 // its cells follow the bounding box, not the points, so two outliers (the
 // Kettner grid: 65 536 points within 2^-45 of (0.5, 0.5), plus (12, 12) and
 // (24, 24)), a slanted line or tight clusters put thousands of points in one
-// cell, and every facet near them examined them all. Median splits keep each
+// cell, and every facet near them examined them all. Splits by rank keep each
 // leaf at kLeaf points whatever the distribution.
 //
 // The tree only PRUNES; the guarantee a search relies on:
@@ -41,12 +42,11 @@ namespace dlab {
 template <int D>
 class KdTree {
  public:
-  // Leaf size: 8, so leaves of 4-5 points at n = 5000 or 20000 (median
-  // splits). Measured against leaves of 2-3 (kLeaf 4) and 9-10 points (kLeaf
-  // 12 or 16), 3D clustered n = 5000: 1 % and 8 % more instructions
-  // (papers/triangulation_costs.md, session 10); again with the climb's stop
-  // (session 29), uniform 2D 10^5 and 3D 2*10^4: kLeaf 4, 6 and 12 no fewer.
-  static constexpr std::uint32_t kLeaf = 8;
+  // Leaves of 5 or 6 points at any n (split_count).  Leaves of 4-5 points
+  // took fewer instructions than 2-3 or 9-10 (3D clustered n = 5000, session
+  // 10; uniform 2D 10^5 and 3D 2*10^4 with the climb's stop, session 29);
+  // leaves of 6 and 5 took the same at 10^5 and 10^6 (session 46).
+  static constexpr std::uint32_t kLeaf = 6;
   static constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;
 
   struct Node {
@@ -204,6 +204,17 @@ class KdTree {
     }
   }
 
+  // How many of c > kLeaf points go to the left child: the node's share of
+  // the ceil(c / kLeaf) leaves its subtree has, half of them (rounded down) to
+  // the left.  Every leaf then holds c / leaves points, kLeaf - 1 or kLeaf at
+  // any n; median splits gave n / 2^depth, anywhere in (kLeaf / 2, kLeaf]: 4.9
+  // points a leaf at n = 10^4 and 7.6 at 10^6, which made the points a search
+  // examines grow with n (papers/triangulation_costs.md, session 46).
+  static std::uint32_t split_count(std::uint32_t c) {
+    const std::uint64_t leaves = (std::uint64_t{c} + kLeaf - 1) / kLeaf;
+    return static_cast<std::uint32_t>(std::uint64_t{c} * (leaves / 2) / leaves);
+  }
+
   std::uint32_t build_node(std::uint32_t b, std::uint32_t e, std::uint32_t parent) {
     const auto k = static_cast<std::uint32_t>(nodes_.size());
     Node n{};
@@ -220,7 +231,7 @@ class KdTree {
       return k;
     }
     const int axis = split_axis(n);
-    const std::uint32_t m = b + (e - b) / 2;
+    const std::uint32_t m = b + split_count(e - b);
     // A total order (coordinate, then id): the tree is the same on every run.
     std::nth_element(slots_.begin() + b, slots_.begin() + m, slots_.begin() + e,
                      [axis](const Slot& x, const Slot& y) {

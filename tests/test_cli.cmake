@@ -536,10 +536,10 @@ dlab_case(outcome_george_exact_sphere_check RC 0 OUT "valid Delaunay" ARGS check
 # cases do not depend on the generator). Each verdict is cross-checked by
 # `dlab check` on the written simplices.
 file(WRITE "${WORK}/nd2.txt" "-0x1p-1 0x1.7ffffffffffffp-2\n0x1.0000000000001p-1 -0x1.7ffffffffffffp-2\n0x1.3ffffffffffffp-1 0x0.0000000000001p-1022\n0x0p+0 0x1.3ffffffffffffp-1\n-0x1.4000000000001p-1 -0x0.0000000000001p-1022\n0x0.0000000000001p-1022 -0x1.3ffffffffffffp-1\n0x1.7ffffffffffffp-2 -0x1.0000000000001p-1\n-0x1.7ffffffffffffp-2 0x1.fffffffffffffp-2\n")
-dlab_case(outcome_float_not_delaunay RC 1 ERR "^dlab triangulate: not-delaunay: 1 facet not locally Delaunay \\(first: simplex 0 facet 0\\) \\(tanemura, float kernel\\)\n$"
+dlab_case(outcome_float_not_delaunay RC 1 ERR "^dlab triangulate: not-delaunay: 2 facets not locally Delaunay \\(first: simplex 0 facet 0\\) \\(tanemura, float kernel\\)\n$"
           ARGS triangulate nd2.txt --algo tanemura --kernel float -o nd2_float.tri --stats oc_float_nd.json)
 expect_json(outcome_float_not_delaunay_stats "${WORK}/oc_float_nd.json" "\"outcome\": \"not-delaunay\",\n  \"validated\": true,")
-dlab_case(outcome_float_not_delaunay_check RC 1 OUT "not_delaunay: 1 \\(first: simplex 0 facet 0\\)" ARGS check nd2.txt nd2_float.tri)
+dlab_case(outcome_float_not_delaunay_check RC 1 OUT "not_delaunay: 2 \\(first: simplex 0 facet 0\\)" ARGS check nd2.txt nd2_float.tri)
 dlab_case(outcome_exact_nd2 RC 0 ERR "^$" ARGS triangulate nd2.txt --algo tanemura --kernel adaptive -o /dev/null)
 file(WRITE "${WORK}/nd3.txt" "-0x1.0000000000001p-1 0x1p-2 0x1.0000000000001p-1\n-0x1.0000000000001p-2 -0x1.fffffffffffffp-2 0x1p-1\n0x1.fffffffffffffp-2 -0x1.fffffffffffffp-2 0x1.fffffffffffffp-3\n0x1p-1 -0x1.0000000000001p-1 -0x1p-2\n0x1.fffffffffffffp-2 -0x1p-2 0x1p-1\n0x1.fffffffffffffp-2 -0x1p-2 -0x1p-1\n0x1p-1 0x1.0000000000001p-1 0x1p-2\n0x1.fffffffffffffp-2 0x1.fffffffffffffp-2 -0x1.fffffffffffffp-3\n")
 dlab_case(outcome_epsilon_invalid RC 1 ERR "^dlab triangulate: invalid: hull-coverage: 2 reflex boundary ridges \\(the union is not convex\\) \\(first: simplex [0-9]+ facet [0-3] point [0-7]\\) \\(bowyer-watson, epsilon kernel\\)\n$"

@@ -236,6 +236,36 @@ TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[k
   }
 }
 
+// split_count: every leaf holds kLeaf - 1 or kLeaf points from n = 20 on, so
+// the points a search examines do not grow with n (median splits gave leaves
+// of n / 2^depth points: 4 or 5 at n = 10^4, 7 or 8 at 10^6).
+TEST_CASE("kd-tree: every leaf holds kLeaf - 1 or kLeaf points at any n", "[kd_tree]") {
+  std::mt19937_64 rng(46);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const std::uint32_t n : {20u, 21u, 97u, 1000u, 10000u, 54321u}) {
+    INFO("n = " << n);
+    std::vector<Point3> pts(n);
+    for (Point3& p : pts) p = {u(rng), u(rng), u(rng)};
+    std::vector<std::uint32_t> ids(n);
+    std::iota(ids.begin(), ids.end(), 0u);
+    KdTree<3> tree;
+    tree.build(pts, ids);
+    std::uint32_t covered = 0, small = 0, large = 0;
+    for (std::uint32_t k = 0; k < tree.node_count(); ++k) {
+      const auto& node = tree.node(k);
+      if (!KdTree<3>::is_leaf(node)) continue;
+      const std::uint32_t size = node.end - node.begin;
+      covered += size;
+      small += size < KdTree<3>::kLeaf - 1;
+      large += size > KdTree<3>::kLeaf;
+      for (std::uint32_t s = node.begin; s < node.end; ++s) CHECK(tree.leaf_of(tree.id(s)) == k);
+    }
+    CHECK(covered == n);
+    CHECK(small == 0);
+    CHECK(large == 0);
+  }
+}
+
 TEST_CASE("kd-tree: far from zero, the translation keeps the search pruned", "[kd_tree]") {
   // Before the translation (points examined per facet, x1000): 3D half-integers
   // near -2^52, n = 2000: 149 775; binade-doubles near 2^1000: 331 376. After:
