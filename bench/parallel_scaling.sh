@@ -3,7 +3,8 @@
 # --threads T` against the serial algorithm (`--canonical`, so that both sort
 # their output the same way) on the same points, in the same run.
 #
-#   bench/parallel_scaling.sh [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t "1 2 4"] [-k KERNEL] DLAB [DLAB...]
+#   bench/parallel_scaling.sh [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t "1 2 4"] [-k KERNEL]
+#                             [-c "0 1"] DLAB [DLAB...]
 #
 # Seconds are `--stats`'s "seconds" (triangulating, ordering and sorting the
 # output; not reading or writing), the median of REPEAT runs, alternating the
@@ -15,13 +16,18 @@
 # (points put back after meeting another worker) of the last run. Every output
 # is compared with the first binary's serial one byte for byte; a difference
 # stops the script with exit 1.
+# -c "C1 C2 ...": also the serial run pinned to each of these CPUs (taskset),
+# rows "cpuC" (their speed-up column: the unpinned serial's seconds over
+# theirs). On a VM the CPUs need not be equal: session 46's 2-vCPU VM ran the
+# serial 2D run in 0.51 s on one and 0.80 s on the other, which one changing
+# within minutes (papers/triangulation_costs.md).
 set -euo pipefail
-dim=3 n=1000000 gen=uniform repeat=3 threads="1 2" kernel=adaptive
-usage="usage: $0 [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t \"T1 T2 ...\"] [-k KERNEL] DLAB [DLAB...]"
-while getopts "d:n:g:r:t:k:" o; do
+dim=3 n=1000000 gen=uniform repeat=3 threads="1 2" kernel=adaptive cpus=""
+usage="usage: $0 [-d DIM] [-n N] [-g GENERATOR] [-r REPEAT] [-t \"T1 T2 ...\"] [-k KERNEL] [-c \"C1 C2 ...\"] DLAB [DLAB...]"
+while getopts "d:n:g:r:t:k:c:" o; do
   case $o in
     d) dim=$OPTARG ;; n) n=$OPTARG ;; g) gen=$OPTARG ;; r) repeat=$OPTARG ;; t) threads=$OPTARG ;;
-    k) kernel=$OPTARG ;; *) echo "$usage" >&2; exit 2 ;;
+    k) kernel=$OPTARG ;; c) cpus=$OPTARG ;; *) echo "$usage" >&2; exit 2 ;;
   esac
 done
 shift $((OPTIND - 1))
@@ -32,11 +38,17 @@ trap 'rm -rf "$work"' EXIT
 
 "${binaries[0]}" gen "$gen" --dim "$dim" --n "$n" --seed 1 -o "$work/p.txt"
 configs=(serial $threads)
+for c in $cpus; do configs+=("cpu$c"); done
 for ((r = 0; r < repeat; ++r)); do
   for ((b = 0; b < ${#binaries[@]}; ++b)); do
     for c in "${configs[@]}"; do
-      if [ "$c" = serial ]; then opt=(--canonical); else opt=(--threads "$c"); fi
-      "${binaries[b]}" triangulate "$work/p.txt" --kernel "$kernel" "${opt[@]}" -o "$work/$b.$c.tri" \
+      pin=()
+      case $c in
+        serial) opt=(--canonical) ;;
+        cpu*) opt=(--canonical) pin=(taskset -c "${c#cpu}") ;;
+        *) opt=(--threads "$c") ;;
+      esac
+      "${pin[@]}" "${binaries[b]}" triangulate "$work/p.txt" --kernel "$kernel" "${opt[@]}" -o "$work/$b.$c.tri" \
         --stats "$work/$b.$c.json"
       python3 -c 'import json, sys
 d = json.load(open(sys.argv[1])); p = d.get("phase_seconds", {})  # none before session 45
