@@ -20,8 +20,13 @@
 //    round, whose cuts start from the next axis; when few points remain (or D
 //    rounds make no progress) one worker inserts them alone;
 //  - each task starts walking from a simplex of its box, found between rounds
-//    by a walk of the calling thread to one of the task's points; a walk that
-//    leaves the box makes the next one start from its last simplex in it;
+//    by a walk of the calling thread to one of the task's points, and then
+//    from the simplex of its last insertion, also after a walk or a cavity
+//    the box refused.  (Starting where a refused walk stopped, at the box's
+//    side, left later walks stuck there, one refused facet away from all the
+//    task's later points: 10^6 uniform 2D points, BRIO seed 1, deferred
+//    77 000 of one box's 238 000 points in a row; papers/triangulation_costs.md,
+//    session 46);
 //  - the first points are inserted by one worker alone, until the mesh is large
 //    enough for T boxes;
 //  - each worker takes new slots from its own free list and from blocks of a
@@ -196,7 +201,7 @@ class ParallelBowyerWatson {
     Restar<D> restar;
     std::vector<std::uint32_t> cavity, edges;  // edges: search_cavity_ccw's stack (2D)
     std::vector<BoundaryRecord<D>> records;
-    std::uint32_t last = 0;   // where the next walk starts
+    std::uint32_t last = 0;   // where the next walk starts: the last insertion's simplex (see the header)
     std::uint32_t stamp = 0;  // this worker's stamps: stamp (in), stamp + 1 (out)
     WalkRng rng;
     std::string message;
@@ -321,10 +326,7 @@ template <class Guard>
   const std::uint64_t bound = 4ull * mesh_.slots() + 1000;
   const Located loc = visibility_walk<K, D>(w.k, mesh_, pts_, start, p, bound, w.rng, guard);
   w.walk_steps += loc.steps;
-  if (loc.end == Located::End::blocked) {  // the next walk starts nearer
-    w.last = loc.simplex;
-    return abandon(w, guard);
-  }
+  if (loc.end == Located::End::blocked) return abandon(w, guard);  // w.last stays: see the header
   if (loc.end == Located::End::step_bound) {
     // Other workers may have changed the mesh under a long walk: only a walk
     // alone proves a bug.
@@ -358,10 +360,7 @@ template <class Guard>
     for (std::uint32_t s : w.cavity) guard.unmark(mesh_, s, in);
     for (const BoundaryRecord<D>& r : w.records) guard.unmark(mesh_, Mesh<D>::simplex_of(r.outside), out);
   }
-  if (!searched) {
-    w.last = loc.simplex;
-    return abandon(w, guard);
-  }
+  if (!searched) return abandon(w, guard);
   const std::size_t extra = w.records.size() > w.cavity.size() ? w.records.size() - w.cavity.size() : 0;
   if (!w.slots.prepare(extra, reserve_next_, reserve_end_)) return abandon(w, guard);
 
