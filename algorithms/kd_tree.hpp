@@ -2,8 +2,8 @@
 // Tanemura–Ogawa–Ogita front (algorithms/tanemura.hpp). Each node splits its
 // points on its widest axis (Bentley, CACM 18 (1975); Friedman, Bentley,
 // Finkel, ACM TOMS 3 (1977)), at the rank that gives every leaf kLeaf - 1 or
-// kLeaf points (split_count); every node keeps the bounding box of its own
-// points.
+// kLeaf points once n >= 20 (split_count); every node keeps the bounding box
+// of its own points.
 //
 // Why not a uniform bucket grid (Tanemura, Ogawa, Ogita 1983; Baker §16.2.3):
 // its cells follow the bounding box, not the points, so two outliers (the
@@ -42,7 +42,7 @@ namespace dlab {
 template <int D>
 class KdTree {
  public:
-  // Leaves of 5 or 6 points at any n (split_count).  Leaves of 4-5 points
+  // Leaves of 5 or 6 points from n = 20 on (split_count).  Leaves of 4-5 points
   // took fewer instructions than 2-3 or 9-10 (3D clustered n = 5000, session
   // 10; uniform 2D 10^5 and 3D 2*10^4 with the climb's stop, session 29);
   // leaves of 6 and 5 took the same at 10^5 and 10^6 (session 46).
@@ -206,10 +206,12 @@ class KdTree {
 
   // How many of c > kLeaf points go to the left child: the node's share of
   // the ceil(c / kLeaf) leaves its subtree has, half of them (rounded down) to
-  // the left.  Every leaf then holds c / leaves points, kLeaf - 1 or kLeaf at
-  // any n; median splits gave n / 2^depth, anywhere in (kLeaf / 2, kLeaf]: 4.9
-  // points a leaf at n = 10^4 and 7.6 at 10^6, which made the points a search
-  // examines grow with n (papers/triangulation_costs.md, session 46).
+  // the left.  Every leaf then holds about n / leaves points: kLeaf - 1 or
+  // kLeaf once n >= 20 (tests/test_kd_tree.cpp: every n up to 600, and
+  // some larger).  Median splits gave n / 2^depth, anywhere in (kLeaf / 2,
+  // kLeaf]: 4.9 points a leaf at n = 10^4 and 7.6 at 10^6, which made the
+  // points a search examines grow with n (papers/triangulation_costs.md,
+  // session 46).
   static std::uint32_t split_count(std::uint32_t c) {
     const std::uint64_t leaves = (std::uint64_t{c} + kLeaf - 1) / kLeaf;
     return static_cast<std::uint32_t>(std::uint64_t{c} * (leaves / 2) / leaves);

@@ -242,7 +242,9 @@ TEST_CASE("kd-tree: boxes enclose the exact translated, scaled coordinates", "[k
 TEST_CASE("kd-tree: every leaf holds kLeaf - 1 or kLeaf points at any n", "[kd_tree]") {
   std::mt19937_64 rng(46);
   std::uniform_real_distribution<double> u(-1, 1);
-  for (const std::uint32_t n : {20u, 21u, 97u, 1000u, 10000u, 54321u}) {
+  std::vector<std::uint32_t> sizes{1000, 10000, 54321};
+  for (std::uint32_t n = 20; n <= 600; ++n) sizes.push_back(n);
+  for (const std::uint32_t n : sizes) {
     INFO("n = " << n);
     std::vector<Point3> pts(n);
     for (Point3& p : pts) p = {u(rng), u(rng), u(rng)};

@@ -50,8 +50,6 @@ std::vector<Point<D>> in_brio_order(const std::vector<Point<D>>& pts, std::uint6
   return seq;
 }
 
-// Duplicates are merged into the vertex inserted first, which the schedule
-// decides: map every simplex vertex to the smallest index of its position.
 // Duplicates are merged into the copy inserted first, which the schedule
 // decides: every vertex is mapped to the first index of its position (as the
 // driver maps to the first input occurrence).
