@@ -270,7 +270,7 @@ TEST_CASE("parallel bowyer-watson: boxes never share a simplex they write", "[pa
 // it from all the task's later points, which then all wait for the next round
 // (10^6 uniform 2D points, BRIO seed 1: 77 000 of one box's 238 000 points in
 // a row, 111 000 deferrals in the whole run against 19 000).  Not in the
-// ThreadSanitizer stage (tag): 10^6 insertions there would take minutes.
+// ThreadSanitizer stage (tag): its 8*10^5 insertions would take minutes there.
 TEST_CASE("parallel bowyer-watson: a refused walk does not strand the task's later points",
           "[parallel_bowyer_watson_deferrals]") {
   std::mt19937_64 rng(20261208);
